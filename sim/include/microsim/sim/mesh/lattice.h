@@ -10,8 +10,8 @@
 // figures. The bottom face (z = 0) is fixed; the paper's protocol then displaces the
 // middle node of the top face (latticeTopMiddle) by one unit per cycle. (The paper also
 // quotes 64 links for 3³; that one figure fits no rule that gives the five above: this
-// rule gives 126.) Surface
-// triangles cover the six faces, two per unit square, wound outward.
+// rule gives 126.) Surface triangles cover the six faces, two per unit square, wound
+// outward.
 
 #include "microsim/sim/mesh/spring_model.h"
 
