@@ -1,0 +1,69 @@
+#pragma once
+// The tissue solvers' common interface. Every solver takes the constant model, the
+// state it advances and this step's controls, and stops on whichever of its budget's
+// limits comes first. Solvers are objects because they keep caches between steps
+// (the paper's NODE-ORDERING, factorisations, warm starts); the model and state they
+// are handed are the only truth.
+
+#include "microsim/sim/mesh/spring_model.h"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace microsim::sim {
+
+/// When a solve stops. Whichever limit is reached first ends it.
+struct SolveBudget {
+  int maxIterations = std::numeric_limits<int>::max();
+  double maxSeconds = std::numeric_limits<double>::infinity();  ///< wall-clock (s)
+  double residualTolerance = 0.0;  ///< stop once the relative residual is below this
+};
+
+enum class SolveStatus : std::uint8_t {
+  Converged,       ///< relative residual ≤ tolerance
+  IterationLimit,  ///< ran its iterations
+  TimeLimit,       ///< ran out of time
+  Diverged,        ///< the residual grew without bound; the state was restored to its input
+  InvalidInput,    ///< NaN/Inf in the state or controls, bad indices; nothing was changed
+};
+
+struct SolveReport {
+  SolveStatus status = SolveStatus::IterationLimit;
+  int iterations = 0;
+  double seconds = 0.0;
+  double residual = 0.0;  ///< relative residual at the end (see relativeResidual)
+};
+
+/// Tunables shared by the solvers; each solver reads the ones it has.
+struct SolverParams {
+  double timeStep = 1.0 / 30.0;  ///< s: one cycle of the paper's simulation (rk4, implicit)
+  double alpha = 0.0;            ///< qss step scale (mm per force unit); 0 = chosen from the model
+  double cutout = 0.0;           ///< qss per-level cutout ε (mm); 0 = off
+  double momentum = 0.0;         ///< qss momentum β in [0, 1) (the paper's "CG-style" variant)
+  double damping = 0.0;          ///< g/s: added to every node's own damping (rk4, implicit)
+  bool activeRegion = true;      ///< newton: solve only where the pull reaches (see newton)
+  double linearTolerance = 0.0;  ///< newton, implicit: PCG relative tolerance; 0 = automatic
+};
+
+class TissueSolver {
+ public:
+  virtual ~TissueSolver() = default;
+  virtual std::string_view name() const = 0;
+  virtual SolveReport solve(const SpringModel& model, SpringState& state,
+                            const SpringControls& controls, const SolveBudget& budget) = 0;
+  /// Forget caches (orderings, warm starts): call after topology or control-set changes
+  /// that the solver cannot see for itself.
+  virtual void reset() {}
+};
+
+/// The solver registered under `name` ("qss", "rk4", "implicit", "newton", "reference"),
+/// or nullptr for an unknown name.
+std::unique_ptr<TissueSolver> makeSolver(std::string_view name, const SolverParams& params = {});
+/// Every name makeSolver accepts, in a stable order.
+std::vector<std::string> solverNames();
+
+}  // namespace microsim::sim

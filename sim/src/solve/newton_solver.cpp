@@ -1,0 +1,342 @@
+// newton and reference: equilibrium by Newton–PCG (see solvers.h).
+//
+// The active region. A pull on a big mesh should cost what it costs on a small one, so
+// the unknowns are only the free nodes the pull reaches, a region R that grows as the
+// wave spreads:
+//  - seeds: when the state is bit-identical to what this solver returned last time and
+//    the topology is unchanged, the free neighbours of the control nodes that moved since
+//    (plus the previous region if that solve stopped short of its tolerance); otherwise
+//    (first call, someone else moved nodes, a cut) one full force pass, and every free
+//    node whose |f_i| exceeds the threshold;
+//  - R = the seeds plus two breadth-first layers of free nodes;
+//  - every iteration the boundary B (free nodes next to R, outside it) is checked; nodes of
+//    B whose |f_i| exceeds the threshold join R with 2^g further layers (g = growths so far),
+//    so that a wave crossing L levels costs O(log L) growths;
+//  - nodes outside R ∪ B keep the forces they had, which the previous solve left below
+//    the threshold, so max over R ∪ B is the residual of the whole mesh.
+// The threshold is the budget's residual tolerance times forceScale. Nodes outside R are
+// held where they are during a step, as if fixed; the result is exact once R stops growing.
+#include "microsim/sim/solve/spring_kernels.h"
+#include "solve/block_system.h"
+#include "solve/solve_support.h"
+#include "solve/solvers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace microsim::sim::detail {
+namespace {
+
+constexpr double kReferenceTolerance = 1e-10;
+
+class NewtonSolver final : public TissueSolver {
+ public:
+  NewtonSolver(const SolverParams& params, bool reference)
+      : params_(params), reference_(reference) {}
+
+  std::string_view name() const override { return reference_ ? "reference" : "newton"; }
+  void reset() override {
+    lastModel_ = nullptr;
+    lastX_.resize(3, 0);
+  }
+
+  SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
+                    const SolveBudget& budgetIn) override {
+    Stopwatch clock;
+    SolveReport report;
+    if (!validInput(model, state, controls)) {
+      report.status = SolveStatus::InvalidInput;
+      return report;
+    }
+    SolveBudget budget = budgetIn;
+    if (reference_) {
+      budget.residualTolerance = budget.residualTolerance > 0.0
+                                     ? std::min(budget.residualTolerance, kReferenceTolerance)
+                                     : kReferenceTolerance;
+      budget.maxIterations = std::max(budget.maxIterations, 1000);
+    }
+    const int n = model.nodeCount();
+    const Points x0 = state.x;
+    const Points v0 = state.v;
+    const bool cacheValid = cacheMatches(model, state.x);
+    applyControls(model, state, controls);
+    Points& x = state.x;
+
+    const std::vector<unsigned char> lastFree = std::move(free_);
+    free_ = freeMask(model, controls);
+    freeCount_ = static_cast<int>(std::count(free_.begin(), free_.end(), 1));
+    scale_ = forceScale(model, controls);
+    threshold_ = budget.residualTolerance * scale_;
+    kMax_ = maxStiffness(model);
+    if (static_cast<int>(local_.size()) != n) {
+      local_.assign(static_cast<std::size_t>(n), -1);
+      region_.clear();
+    }
+
+    // seeds of the active region
+    std::vector<int> seeds;
+    const bool local = params_.activeRegion && !reference_;
+    if (local && cacheValid) {
+      for (int c = 0; c < controls.size(); ++c) {
+        const int node = controls.nodes[c];
+        if (model.isFixed(node) || (lastX_.col(node) == controls.targets.col(c))) continue;
+        for (int li : model.linksOf(node))
+          if (model.link(li).alive && free_[model.otherEnd(li, node)])
+            seeds.push_back(model.otherEnd(li, node));
+      }
+      if (!lastConverged_)
+        for (int i : region_)
+          if (free_[i]) seeds.push_back(i);
+      // released control nodes
+      if (lastFree.size() == free_.size())
+        for (int i = 0; i < n; ++i)
+          if (free_[i] && !lastFree[i]) seeds.push_back(i);
+    } else if (local) {
+      Points f;
+      totalForces(model, x, f);
+      for (int i = 0; i < n; ++i)
+        if (free_[i] && f.col(i).norm() > threshold_) seeds.push_back(i);
+    } else {
+      for (int i = 0; i < n; ++i)
+        if (free_[i]) seeds.push_back(i);
+    }
+    clearRegion();
+    growths_ = 0;
+    grow(model, seeds, local ? 2 : 0);
+
+    // newton iterations
+    report.status = SolveStatus::IterationLimit;
+    double startResidual = -1.0;
+    while (true) {
+      double residual = regionResidual(model, x);
+      // grow while the boundary is out of balance
+      while (local && !boundaryOut_.empty()) {
+        grow(model, boundaryOut_, 1 << std::min(++growths_, 12));
+        residual = regionResidual(model, x);
+      }
+      report.residual = residual / scale_;
+      if (startResidual < 0.0) startResidual = residual;
+      if (!std::isfinite(residual) ||
+          residual > kDivergenceFactor * std::max(startResidual, scale_)) {
+        state.x = x0;
+        state.v = v0;
+        report.status = SolveStatus::Diverged;
+        report.seconds = clock.seconds();
+        lastModel_ = nullptr;
+        return report;
+      }
+      if (residual <= threshold_ || region_.empty()) {
+        report.status = SolveStatus::Converged;
+        break;
+      }
+      if (report.iterations >= budget.maxIterations) break;
+      if (clock.seconds() >= budget.maxSeconds) {
+        report.status = SolveStatus::TimeLimit;
+        break;
+      }
+      const bool moved = step(model, x, report.residual);
+      ++report.iterations;
+      if (!moved) break;
+    }
+
+    state.v.setZero();
+    lastConverged_ = report.status == SolveStatus::Converged;
+    remember(model, x);
+    report.seconds = clock.seconds();
+    return report;
+  }
+
+ private:
+  bool cacheMatches(const SpringModel& model, const Points& x) const {
+    return lastModel_ == &model && lastNodes_ == model.nodeCount() &&
+           lastLinks_ == model.linkCount() && lastAlive_ == model.aliveLinkCount() &&
+           lastGravity_ == model.gravity &&
+           lastX_.cols() == x.cols() &&
+           std::memcmp(lastX_.data(), x.data(), sizeof(double) * x.size()) == 0;
+  }
+
+  void remember(const SpringModel& model, const Points& x) {
+    lastModel_ = &model;
+    lastNodes_ = model.nodeCount();
+    lastLinks_ = model.linkCount();
+    lastAlive_ = model.aliveLinkCount();
+    lastGravity_ = model.gravity;
+    lastX_ = x;
+  }
+
+  void clearRegion() {
+    for (int i : region_) local_[i] = -1;
+    region_.clear();
+  }
+
+  /// Adds `nodes` (free ones) to the region, then `layers` breadth-first layers of free nodes.
+  void grow(const SpringModel& model, const std::vector<int>& nodes, int layers) {
+    std::vector<int> frontier;
+    for (int i : nodes)
+      if (free_[i] && local_[i] < 0) {
+        local_[i] = static_cast<int>(region_.size());
+        region_.push_back(i);
+        frontier.push_back(i);
+      }
+    std::vector<int> next;
+    for (int layer = 0; layer < layers && !frontier.empty(); ++layer) {
+      next.clear();
+      for (int i : frontier)
+        for (int li : model.linksOf(i)) {
+          if (!model.link(li).alive) continue;
+          const int j = model.otherEnd(li, i);
+          if (!free_[j] || local_[j] >= 0) continue;
+          local_[j] = static_cast<int>(region_.size());
+          region_.push_back(j);
+          next.push_back(j);
+        }
+      frontier.swap(next);
+    }
+  }
+
+  /// Total force on node i (µN).
+  Vec3 nodeForce(const SpringModel& model, const Points& x, int i) const {
+    Vec3 f = model.mass(i) * model.gravity;
+    for (int li : model.linksOf(i)) {
+      const Link& link = model.link(li);
+      if (!link.alive) continue;
+      const Vec3 fl = linkForce(link, x.col(link.a), x.col(link.b));
+      f += link.a == i ? fl : Vec3(-fl);
+    }
+    return f;
+  }
+
+  /// Forces on the region (into force_), the boundary nodes out of balance (into
+  /// boundaryOut_), and the largest |f| over both (µN).
+  double regionResidual(const SpringModel& model, const Points& x) {
+    const int m = static_cast<int>(region_.size());
+    force_.resize(3 * m);
+    double worst = 0.0;
+    for (int r = 0; r < m; ++r) {
+      const Vec3 f = nodeForce(model, x, region_[r]);
+      force_.segment<3>(3 * r) = f;
+      worst = std::max(worst, f.norm());
+    }
+    boundaryOut_.clear();
+    if (static_cast<int>(region_.size()) == freeCount_) return worst;
+    seen_.clear();
+    for (int i : region_)
+      for (int li : model.linksOf(i)) {
+        if (!model.link(li).alive) continue;
+        const int j = model.otherEnd(li, i);
+        if (!free_[j] || local_[j] >= 0) continue;
+        seen_.push_back(j);
+      }
+    std::sort(seen_.begin(), seen_.end());
+    seen_.erase(std::unique(seen_.begin(), seen_.end()), seen_.end());
+    for (int j : seen_) {
+      const double fj = nodeForce(model, x, j).norm();
+      worst = std::max(worst, fj);
+      if (fj > threshold_) boundaryOut_.push_back(j);
+    }
+    return worst;
+  }
+
+  /// Energy of every link touching the region plus the region's weight potential (nJ).
+  double regionEnergy(const SpringModel& model, const Points& x) const {
+    double e = 0.0;
+    for (int i : region_) {
+      for (int li : model.linksOf(i)) {
+        const Link& link = model.link(li);
+        if (!link.alive) continue;
+        const int j = model.otherEnd(li, i);
+        if (local_[j] >= 0 && j < i) continue;  // counted from j
+        e += linkEnergy(link, x.col(link.a), x.col(link.b));
+      }
+      e -= model.mass(i) * model.gravity.dot(x.col(i));
+    }
+    return e;
+  }
+
+  /// One Newton step on the region from force_ (current); false when it could not move.
+  bool step(const SpringModel& model, Points& x, double relativeResidual) {
+    const int m = static_cast<int>(region_.size());
+    // clamped Hessian of the region
+    system_.clear(m);
+    for (int r = 0; r < m; ++r) {
+      const int i = region_[r];
+      for (int li : model.linksOf(i)) {
+        const Link& link = model.link(li);
+        if (!link.alive) continue;
+        const int j = model.otherEnd(li, i);
+        const int s = local_[j];
+        if (s >= 0 && j < i) continue;
+        const Eigen::Matrix3d h = linkHessian(link, x.col(i), x.col(j), true);
+        system_.diag[r] += h;
+        if (s >= 0) {
+          system_.diag[s] += h;
+          system_.off.push_back({r, s, SymBlock::from(-h)});
+        }
+      }
+      system_.diag[r] += 1e-9 * kMax_ * Eigen::Matrix3d::Identity();
+    }
+
+    // inexact newton direction
+    double eta = params_.linearTolerance;
+    if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
+    const PcgResult pcg = solvePcg(system_, force_, direction_, eta, std::max(50, 3 * m));
+    double slope = force_.dot(direction_);
+    if (!pcg.ok || !(slope > 0.0) || !direction_.allFinite()) {
+      // fall back to the block-Jacobi scaled force
+      for (int r = 0; r < m; ++r)
+        direction_.segment<3>(3 * r) = invertBlock(system_.diag[r]) * force_.segment<3>(3 * r);
+      slope = force_.dot(direction_);
+      if (!(slope > 0.0)) return false;
+    }
+
+    // backtracking line search on the energy (Armijo), accepting a full step that lowers
+    // |f| when the energy change is below rounding
+    const double e0 = regionEnergy(model, x);
+    const double f0 = force_.squaredNorm();
+    start_.resize(3, m);
+    for (int r = 0; r < m; ++r) start_.col(r) = x.col(region_[r]);
+    double t = 1.0;
+    for (int attempt = 0; attempt < 30; ++attempt, t *= 0.5) {
+      for (int r = 0; r < m; ++r)
+        x.col(region_[r]) = start_.col(r) + t * direction_.segment<3>(3 * r);
+      const double e = regionEnergy(model, x);
+      if (e <= e0 - 1e-4 * t * slope) return true;
+      if (std::abs(e - e0) <= 1e-12 * (std::abs(e0) + 1.0)) {
+        double f = 0.0;
+        for (int r = 0; r < m; ++r) f += nodeForce(model, x, region_[r]).squaredNorm();
+        if (f < f0) return true;
+      }
+    }
+    for (int r = 0; r < m; ++r) x.col(region_[r]) = start_.col(r);
+    return false;
+  }
+
+  SolverParams params_;
+  bool reference_;
+  // the last state returned, to find what moved since
+  const SpringModel* lastModel_ = nullptr;
+  int lastNodes_ = -1, lastLinks_ = -1, lastAlive_ = -1;
+  Points lastX_{3, 0};
+  Vec3 lastGravity_ = Vec3::Zero();
+  bool lastConverged_ = true;
+  // per solve
+  std::vector<unsigned char> free_;
+  int freeCount_ = 0;
+  double scale_ = 1.0, threshold_ = 0.0, kMax_ = 0.0;
+  std::vector<int> local_;   ///< per node: index in region_, or −1
+  std::vector<int> region_;  ///< the unknown nodes
+  std::vector<int> boundaryOut_, seen_;
+  int growths_ = 0;
+  Eigen::VectorXd force_, direction_;
+  Points start_;
+  BlockSystem system_;
+};
+
+}  // namespace
+
+std::unique_ptr<TissueSolver> makeNewtonSolver(const SolverParams& params, bool reference) {
+  return std::make_unique<NewtonSolver>(params, reference);
+}
+
+}  // namespace microsim::sim::detail
