@@ -1,0 +1,50 @@
+#include "cli/cli.h"
+
+#include "cli/commands.h"
+
+namespace microsim::cli {
+
+std::vector<Command> commands() {
+  return {
+
+
+      {QStringLiteral("bench"), Cli::tr("run a benchmark (beside the paper's figures)"), &runBench},
+  };
+}
+
+namespace {
+
+void printUsage(QTextStream& out) {
+  out << Cli::tr("Usage: microsim-cli <command> [options]") << '\n'
+      << Cli::tr("       microsim-cli --version | --help") << "\n\n"
+      << Cli::tr("Commands:") << '\n';
+  for (const Command& c : commands()) out << "  " << c.name.leftJustified(10) << c.summary << '\n';
+  out << '\n'
+      << Cli::tr("Run 'microsim-cli <command> --help' for a command's options.") << '\n';
+}
+
+}  // namespace
+
+int runCli(const QStringList& arguments, Streams& io) {
+  if (arguments.isEmpty()) {
+    printUsage(io.err);
+    return kExitUsage;
+  }
+  const QString& first = arguments.front();
+  if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
+    io.out << "microsim-cli " << MICROSIM_VERSION << '\n';
+    return kExitOk;
+  }
+  if (first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+    printUsage(io.out);
+    return kExitOk;
+  }
+  for (const Command& c : commands()) {
+    if (c.name == first) return c.run(arguments.mid(1), io);
+  }
+  io.err << Cli::tr("microsim-cli: unknown command '%1'").arg(first) << '\n';
+  printUsage(io.err);
+  return kExitUsage;
+}
+
+}  // namespace microsim::cli

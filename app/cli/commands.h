@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands' entry points, one file each (solve_command.cpp, ...).
+#include "cli/cli.h"
+
+namespace microsim::cli {
+
+
+
+int runBench(const QStringList& args, Streams& io);
+
+}  // namespace microsim::cli

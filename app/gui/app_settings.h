@@ -1,0 +1,12 @@
+#pragma once
+// The keys microsim keeps in QSettings, declared once.
+#include <QString>
+
+namespace microsim::gui::settings {
+
+inline QString language() { return QStringLiteral("ui/language"); }
+inline QString windowGeometry() { return QStringLiteral("ui/windowGeometry"); }
+inline QString windowState() { return QStringLiteral("ui/windowState"); }
+inline QString databasePath() { return QStringLiteral("storage/databasePath"); }
+
+}  // namespace microsim::gui::settings

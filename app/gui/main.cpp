@@ -1,0 +1,71 @@
+// microsim: the desktop app. Opens the trainee history (SQLite in the user's data
+// folder unless --database says otherwise), loads the interface language, and shows
+// the main window.
+#include "gui/app_settings.h"
+#include "gui/main_window.h"
+#include "gui/screenshots.h"
+#include "gui/translations.h"
+
+#include "microsim/assessment/storage/history_database.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSettings>
+#include <QSurfaceFormat>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+  // the viewport's shaders are GLSL 3.30 core; ask before any context exists
+  QSurfaceFormat format;
+  format.setVersion(3, 3);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setDepthBufferSize(24);
+  format.setSamples(4);
+  QSurfaceFormat::setDefaultFormat(format);
+
+  QApplication app(argc, argv);
+  QCoreApplication::setOrganizationName(QStringLiteral("microsim"));
+  QCoreApplication::setApplicationName(QStringLiteral("microsim"));
+  QCoreApplication::setApplicationVersion(QStringLiteral(MICROSIM_VERSION));
+
+  QSettings settings;
+  microsim::gui::installTranslations(
+      app, microsim::gui::chooseLanguage(settings.value(microsim::gui::settings::language()).toString()));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QApplication::translate("main", "Micro-anastomosis training simulator"));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  const QCommandLineOption screenshot(
+      QStringLiteral("screenshot"),
+      QApplication::translate("main", "Write a PNG of each main screen to <dir>, then quit."),
+      QApplication::translate("main", "dir"));
+  const QCommandLineOption database(
+      QStringLiteral("database"),
+      QApplication::translate("main", "Use the SQLite history file <file> instead of the default."),
+      QApplication::translate("main", "file"));
+  parser.addOption(screenshot);
+  parser.addOption(database);
+  parser.process(app);
+
+  QString databasePath = parser.value(database);
+  if (databasePath.isEmpty())
+    databasePath = settings.value(microsim::gui::settings::databasePath(),
+                                  microsim::assessment::HistoryDatabase::defaultPath()).toString();
+  microsim::assessment::HistoryDatabase history;
+  const microsim::assessment::DatabaseStatus status = history.open(databasePath);
+  if (!status.ok())
+    std::fprintf(stderr, "microsim: %s (%s)\n",
+                 qPrintable(microsim::gui::MainWindow::describe(status, databasePath)),
+                 qPrintable(status.driverMessage));
+
+  microsim::gui::MainWindow window(status, databasePath);
+  if (parser.isSet(screenshot)) {
+    const QStringList files = microsim::gui::writeScreenshots(window, parser.value(screenshot));
+    for (const QString& f : files) std::printf("%s\n", qPrintable(f));
+    return files.isEmpty() ? 1 : 0;
+  }
+  window.show();
+  return QApplication::exec();
+}

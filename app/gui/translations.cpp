@@ -1,0 +1,34 @@
+#include "gui/translations.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QTranslator>
+
+namespace microsim::gui {
+
+QStringList availableLanguages() {
+  return {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("es")};
+}
+
+QString chooseLanguage(const QString& setting, const QLocale& system) {
+  const QStringList shipped = availableLanguages();
+  if (shipped.contains(setting)) return setting;
+  const QString systemLanguage = QLocale::languageToCode(system.language());
+  if (shipped.contains(systemLanguage)) return systemLanguage;
+  return QStringLiteral("en");
+}
+
+bool installTranslations(QCoreApplication& app, const QString& language) {
+  if (language == QLatin1String("en")) return true;
+
+  // the translators live as long as the application, which owns them
+  auto* qt = new QTranslator(&app);
+  if (qt->load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    QCoreApplication::installTranslator(qt);
+  auto* ours = new QTranslator(&app);
+  if (!ours->load(QStringLiteral(":/i18n/microsim_") + language)) return false;
+  QCoreApplication::installTranslator(ours);
+  return true;
+}
+
+}  // namespace microsim::gui

@@ -1,0 +1,121 @@
+#include "microsim/assessment/storage/migrations.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QRegularExpression>
+#include <QSqlError>
+#include <QSqlQuery>
+
+#include <algorithm>
+
+namespace microsim::assessment {
+
+namespace {
+
+const QString kResourceDir = QStringLiteral(":/microsim/migrations");
+
+bool ensureMigrationsTable(QSqlDatabase& db) {
+  QSqlQuery q(db);
+  return q.exec(QStringLiteral(
+      "CREATE TABLE IF NOT EXISTS schema_migrations ("
+      " version INTEGER PRIMARY KEY, name TEXT NOT NULL, applied_at TEXT NOT NULL)"));
+}
+
+}  // namespace
+
+std::vector<Migration> bundledMigrations() {
+  std::vector<Migration> out;
+  static const QRegularExpression pattern(QStringLiteral("^(\\d{4})_[a-z0-9_]+\\.sql$"));
+  const QStringList files = QDir(kResourceDir).entryList(QDir::Files, QDir::Name);
+  for (const QString& name : files) {
+    const auto match = pattern.match(name);
+    if (!match.hasMatch()) continue;
+    QFile file(kResourceDir + QLatin1Char('/') + name);
+    if (!file.open(QIODevice::ReadOnly)) continue;
+    out.push_back({match.captured(1).toInt(), name, QString::fromUtf8(file.readAll())});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const Migration& a, const Migration& b) { return a.version < b.version; });
+  return out;
+}
+
+QStringList splitStatements(const QString& sql) {
+  QStringList statements;
+  QString current;
+  const QStringList lines = sql.split(QLatin1Char('\n'));
+  for (const QString& raw : lines) {
+    const QString line = raw.trimmed();
+    if (line.isEmpty() || line.startsWith(QLatin1String("--"))) continue;
+    current += line + QLatin1Char('\n');
+    if (line.endsWith(QLatin1Char(';'))) {
+      current.chop(2);  // the ';' and the newline
+      statements << current.trimmed();
+      current.clear();
+    }
+  }
+  if (!current.trimmed().isEmpty()) statements << current.trimmed();
+  return statements;
+}
+
+int schemaVersion(QSqlDatabase& db) {
+  if (!ensureMigrationsTable(db)) return -1;
+  QSqlQuery q(db);
+  if (!q.exec(QStringLiteral("SELECT COALESCE(MAX(version), 0) FROM schema_migrations")) || !q.next())
+    return -1;
+  return q.value(0).toInt();
+}
+
+MigrationOutcome migrate(QSqlDatabase& db, const std::vector<Migration>& migrations) {
+  MigrationOutcome outcome;
+  if (!ensureMigrationsTable(db)) {
+    outcome.result = MigrationResult::Failed;
+    outcome.driverMessage = db.lastError().text();
+    return outcome;
+  }
+  outcome.version = schemaVersion(db);
+  const int newest = migrations.empty() ? 0 : migrations.back().version;
+  if (outcome.version > newest) {
+    outcome.result = MigrationResult::NewerSchema;
+    return outcome;
+  }
+
+  for (const Migration& m : migrations) {
+    if (m.version <= outcome.version) continue;
+
+    // one transaction per migration: all of its statements and its bookkeeping row
+    if (!db.transaction()) {
+      outcome.result = MigrationResult::Failed;
+      outcome.failedVersion = m.version;
+      outcome.driverMessage = db.lastError().text();
+      return outcome;
+    }
+    QSqlQuery q(db);
+    bool ok = true;
+    for (const QString& statement : splitStatements(m.sql)) {
+      if (!q.exec(statement)) {
+        ok = false;
+        break;
+      }
+    }
+    if (ok) {
+      q.prepare(QStringLiteral(
+          "INSERT INTO schema_migrations (version, name, applied_at) VALUES (?, ?, ?)"));
+      q.addBindValue(m.version);
+      q.addBindValue(m.name);
+      q.addBindValue(QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
+      ok = q.exec();
+    }
+    if (!ok || !db.commit()) {
+      outcome.driverMessage = q.lastError().text();
+      db.rollback();
+      outcome.result = MigrationResult::Failed;
+      outcome.failedVersion = m.version;
+      return outcome;
+    }
+    outcome.version = m.version;
+  }
+  return outcome;
+}
+
+}  // namespace microsim::assessment

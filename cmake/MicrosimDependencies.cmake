@@ -1,0 +1,13 @@
+# Every external package microsim uses; all come from Debian (scripts/install-deps.sh).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(assimp REQUIRED)
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Sql Gui Widgets OpenGL OpenGLWidgets Network Charts LinguistTools Test)
+find_package(Threads REQUIRED)
+
+if(MICROSIM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  include(GoogleTest)
+endif()
+
+include(GNUInstallDirs)

@@ -1,0 +1,16 @@
+# Build options of microsim, all namespaced MICROSIM_*.
+option(MICROSIM_BUILD_TESTS "Build the GoogleTest suites and register them with CTest" ON)
+option(MICROSIM_BUILD_BENCHMARKS "Build the benchmark programs behind 'microsim-cli bench'" ON)
+option(MICROSIM_WERROR "Treat compiler warnings as errors" OFF)
+set(MICROSIM_SANITIZE "" CACHE STRING "Sanitizers: empty, 'address' (address+undefined) or 'thread'")
+set_property(CACHE MICROSIM_SANITIZE PROPERTY STRINGS "" address thread)
+
+if(MICROSIM_SANITIZE STREQUAL "address")
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+elseif(MICROSIM_SANITIZE STREQUAL "thread")
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+elseif(NOT MICROSIM_SANITIZE STREQUAL "")
+  message(FATAL_ERROR "MICROSIM_SANITIZE must be empty, 'address' or 'thread', not '${MICROSIM_SANITIZE}'")
+endif()

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Installs every Debian package that microsim's build, tests and benchmarks need.
+# Idempotent: packages already present are skipped, and apt is not touched at all
+# when nothing is missing. Works as root, or through sudo for an ordinary user.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # engine
+  libeigen3-dev nlohmann-json3-dev libassimp-dev libfcl-dev
+  # Qt 6: widgets, OpenGL, SQL (SQLite driver), charts, network, translations
+  qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6sql6-sqlite qt6-charts-dev
+  qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools linguist-qt6 qt6-svg-dev qt6-translations-l10n
+  libgl1-mesa-dev libgl1-mesa-dri libglx-mesa0
+  # trackers
+  libopenigtlink-dev
+  # tests: GoogleTest, a virtual display for GUI tests
+  libgtest-dev libgmock-dev xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    sudo_cmd=(sudo)
+  else
+    echo "install-deps: missing packages (${missing[*]}) and neither root nor sudo" >&2
+    exit 1
+  fi
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"

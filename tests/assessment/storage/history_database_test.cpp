@@ -1,0 +1,117 @@
+#include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/migrations.h"
+
+#include <QFile>
+#include <QSqlQuery>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace microsim::assessment {
+namespace {
+
+QString tablesOf(QSqlDatabase db) {
+  QSqlQuery q(db);
+  q.exec(QStringLiteral("SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY name"));
+  QStringList names;
+  while (q.next()) names << q.value(0).toString();
+  return names.join(QLatin1Char(','));
+}
+
+TEST(HistoryDatabase, NewFileGetsEveryMigrationInWalMode) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("nested/folder/history.sqlite"));
+  HistoryDatabase db;
+  const DatabaseStatus status = db.open(path);
+  ASSERT_TRUE(status.ok()) << status.driverMessage.toStdString();
+  EXPECT_EQ(status.schemaVersion, bundledMigrations().back().version);
+  EXPECT_GE(status.schemaVersion, 1);
+  EXPECT_TRUE(QFile::exists(path));
+  EXPECT_EQ(tablesOf(db.connection()).toStdString(),
+            "attempt_metrics,attempts,schema_migrations,trainees");
+
+  QSqlQuery q(db.connection());
+  ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA journal_mode")) && q.next());
+  EXPECT_EQ(q.value(0).toString().toStdString(), "wal");
+  ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA foreign_keys")) && q.next());
+  EXPECT_EQ(q.value(0).toInt(), 1);
+}
+
+TEST(HistoryDatabase, ReopeningAppliesNothingTwiceAndKeepsRows) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("history.sqlite"));
+  {
+    HistoryDatabase db;
+    ASSERT_TRUE(db.open(path).ok());
+    QSqlQuery q(db.connection());
+    ASSERT_TRUE(q.exec(QStringLiteral(
+        "INSERT INTO trainees (name, created_at) VALUES ('Ana', '2026-11-22T10:00:00Z')")));
+  }
+  HistoryDatabase again;
+  const DatabaseStatus status = again.open(path);
+  ASSERT_TRUE(status.ok());
+  QSqlQuery q(again.connection());
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT count(*) FROM schema_migrations")) && q.next());
+  EXPECT_EQ(q.value(0).toInt(), static_cast<int>(bundledMigrations().size()));
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT name FROM trainees")) && q.next());
+  EXPECT_EQ(q.value(0).toString().toStdString(), "Ana");
+}
+
+TEST(HistoryDatabase, ForeignFileIsReportedAndLeftUntouched) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("history.sqlite"));
+  const QByteArray garbage = QByteArray("this is not an SQLite database, but a trainee's notes\n").repeated(200);
+  {
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(garbage);
+  }
+  HistoryDatabase db;
+  const DatabaseStatus status = db.open(path);
+  EXPECT_EQ(status.error, DatabaseError::NotADatabase);
+  EXPECT_FALSE(db.isOpen());
+  QFile f(path);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  EXPECT_EQ(f.readAll(), garbage);
+}
+
+TEST(HistoryDatabase, NewerSchemaIsRefused) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("history.sqlite"));
+  {
+    HistoryDatabase db;
+    ASSERT_TRUE(db.open(path).ok());
+    QSqlQuery q(db.connection());
+    ASSERT_TRUE(q.exec(QStringLiteral(
+        "INSERT INTO schema_migrations (version, name, applied_at) VALUES (9999, 'future.sql', 'x')")));
+  }
+  HistoryDatabase db;
+  EXPECT_EQ(db.open(path).error, DatabaseError::NewerSchema);
+}
+
+TEST(Migrations, AFailingMigrationRollsBackWhole) {
+  QTemporaryDir dir;
+  HistoryDatabase db;
+  ASSERT_TRUE(db.open(dir.filePath(QStringLiteral("h.sqlite"))).ok());
+  QSqlDatabase c = db.connection();
+  const int before = schemaVersion(c);
+  std::vector<Migration> migrations = bundledMigrations();
+  migrations.push_back({before + 1, QStringLiteral("broken.sql"),
+                        QStringLiteral("CREATE TABLE half_done (x INTEGER);\nTHIS IS NOT SQL;\n")});
+  const MigrationOutcome outcome = migrate(c, migrations);
+  EXPECT_EQ(outcome.result, MigrationResult::Failed);
+  EXPECT_EQ(outcome.failedVersion, before + 1);
+  EXPECT_EQ(schemaVersion(c), before);
+  EXPECT_FALSE(tablesOf(c).contains(QStringLiteral("half_done")));
+}
+
+TEST(Migrations, SplitStatementsDropsCommentsAndKeepsMultilineStatements) {
+  const QStringList s = splitStatements(QStringLiteral(
+      "-- comment\nCREATE TABLE a (\n  x INTEGER\n);\n\nCREATE INDEX i ON a(x);\n"));
+  ASSERT_EQ(s.size(), 2);
+  EXPECT_EQ(s[0].toStdString(), "CREATE TABLE a (\nx INTEGER\n)");
+  EXPECT_EQ(s[1].toStdString(), "CREATE INDEX i ON a(x)");
+}
+
+}  // namespace
+}  // namespace microsim::assessment

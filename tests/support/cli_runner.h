@@ -1,0 +1,30 @@
+#pragma once
+// Runs the real microsim-cli binary (MICROSIM_CLI_PATH) as a user would, for tests.
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace microsim::testing {
+
+struct CliRun {
+  int exitCode = -1;  ///< -1: did not finish in time; -2: crashed
+  QString out;
+  QString err;
+};
+
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
+  QProcess p;
+  p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
+  CliRun r;
+  if (!p.waitForFinished(timeoutMs)) {
+    p.kill();
+    p.waitForFinished();
+    return r;
+  }
+  r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+  r.out = QString::fromUtf8(p.readAllStandardOutput());
+  r.err = QString::fromUtf8(p.readAllStandardError());
+  return r;
+}
+
+}  // namespace microsim::testing

@@ -1,0 +1,37 @@
+#!/usr/bin/env python3
+"""Fills a Qt .ts file from a glossary (JSON: {context: {source: translation}}).
+
+Maintainers' tool, not part of the build: after `cmake --build build --target
+update_translations` adds new source texts, add their translations to
+translations/glossary_<lang>.json and run
+    python3 translations/tools/fill_ts.py translations/microsim_de.ts translations/glossary_de.json
+Entries without a glossary translation stay unfinished, which the translation test reports.
+"""
+import json
+import sys
+import xml.etree.ElementTree as ET
+
+
+def main(ts_path: str, glossary_path: str) -> int:
+    with open(glossary_path, encoding="utf-8") as f:
+        glossary = json.load(f)
+    tree = ET.parse(ts_path)
+    missing = 0
+    for context in tree.getroot().iter("context"):
+        name = context.find("name").text
+        table = glossary.get(name, {})
+        for message in context.iter("message"):
+            source = message.find("source").text
+            translation = message.find("translation")
+            if source in table:
+                translation.text = table[source]
+                translation.attrib.pop("type", None)
+            elif translation.get("type") == "unfinished":
+                missing += 1
+                print(f"{ts_path}: no translation for [{name}] {source!r}", file=sys.stderr)
+    tree.write(ts_path, encoding="utf-8", xml_declaration=True)
+    return 1 if missing else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2]))
