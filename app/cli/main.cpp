@@ -1,6 +1,7 @@
 // microsim-cli: the headless entry point. A QGuiApplication on the offscreen platform
 // lets benchmarks draw their PNG plots (fonts need it) without any display.
 #include "cli/cli.h"
+#include "i18n/translations.h"
 
 #include <QGuiApplication>
 
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
   QCoreApplication::setOrganizationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationVersion(QStringLiteral(MICROSIM_VERSION));
+  microsim::i18n::installTranslations(app, microsim::i18n::languageFromSettings());
 
   QTextStream out(stdout);
   QTextStream err(stderr);

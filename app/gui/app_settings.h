@@ -4,7 +4,6 @@
 
 namespace microsim::gui::settings {
 
-inline QString language() { return QStringLiteral("ui/language"); }
 inline QString windowGeometry() { return QStringLiteral("ui/windowGeometry"); }
 inline QString windowState() { return QStringLiteral("ui/windowState"); }
 inline QString databasePath() { return QStringLiteral("storage/databasePath"); }

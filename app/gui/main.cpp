@@ -4,7 +4,7 @@
 #include "gui/app_settings.h"
 #include "gui/main_window.h"
 #include "gui/screenshots.h"
-#include "gui/translations.h"
+#include "i18n/translations.h"
 
 #include "microsim/assessment/storage/history_database.h"
 
@@ -29,9 +29,7 @@ int main(int argc, char** argv) {
   QCoreApplication::setApplicationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationVersion(QStringLiteral(MICROSIM_VERSION));
 
-  QSettings settings;
-  microsim::gui::installTranslations(
-      app, microsim::gui::chooseLanguage(settings.value(microsim::gui::settings::language()).toString()));
+  microsim::i18n::installTranslations(app, microsim::i18n::languageFromSettings());
 
   QCommandLineParser parser;
   parser.setApplicationDescription(QApplication::translate("main", "Micro-anastomosis training simulator"));
@@ -51,7 +49,7 @@ int main(int argc, char** argv) {
 
   QString databasePath = parser.value(database);
   if (databasePath.isEmpty())
-    databasePath = settings.value(microsim::gui::settings::databasePath(),
+    databasePath = QSettings().value(microsim::gui::settings::databasePath(),
                                   microsim::assessment::HistoryDatabase::defaultPath()).toString();
   microsim::assessment::HistoryDatabase history;
   const microsim::assessment::DatabaseStatus status = history.open(databasePath);

@@ -1,7 +1,7 @@
 #include "gui/main_window.h"
 
 #include "gui/app_settings.h"
-#include "gui/translations.h"
+#include "i18n/translations.h"
 #include "gui/viewport.h"
 
 #include <QActionGroup>
@@ -64,7 +64,7 @@ void MainWindow::buildMenus() {
   QMenu* settingsMenu = menuBar()->addMenu(tr("&Settings"));
   QMenu* language = settingsMenu->addMenu(tr("&Language"));
   auto* group = new QActionGroup(this);
-  const QString current = QSettings().value(settings::language()).toString();
+  const QString current = QSettings().value(i18n::languageSettingKey()).toString();
   const QStringList names = {tr("System default"), tr("English"), tr("German"), tr("Spanish")};
   const QStringList codes = {QString(), QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("es")};
   for (qsizetype i = 0; i < codes.size(); ++i) {
@@ -81,7 +81,7 @@ void MainWindow::buildMenus() {
 }
 
 void MainWindow::chooseLanguage(const QString& language) {
-  QSettings().setValue(settings::language(), language);
+  QSettings().setValue(i18n::languageSettingKey(), language);
   statusBar()->showMessage(tr("The language changes at the next start."), 5000);
 }
 

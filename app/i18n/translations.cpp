@@ -1,10 +1,11 @@
-#include "gui/translations.h"
+#include "i18n/translations.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
+#include <QSettings>
 #include <QTranslator>
 
-namespace microsim::gui {
+namespace microsim::i18n {
 
 QStringList availableLanguages() {
   return {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("es")};
@@ -16,6 +17,10 @@ QString chooseLanguage(const QString& setting, const QLocale& system) {
   const QString systemLanguage = QLocale::languageToCode(system.language());
   if (shipped.contains(systemLanguage)) return systemLanguage;
   return QStringLiteral("en");
+}
+
+QString languageFromSettings() {
+  return chooseLanguage(QSettings().value(languageSettingKey()).toString());
 }
 
 bool installTranslations(QCoreApplication& app, const QString& language) {
@@ -31,4 +36,4 @@ bool installTranslations(QCoreApplication& app, const QString& language) {
   return true;
 }
 
-}  // namespace microsim::gui
+}  // namespace microsim::i18n

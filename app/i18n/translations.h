@@ -8,7 +8,13 @@
 
 class QCoreApplication;
 
-namespace microsim::gui {
+namespace microsim::i18n {
+
+/// The QSettings key that holds the chosen language (empty: the system's).
+inline QString languageSettingKey() { return QStringLiteral("ui/language"); }
+
+/// The language to use now: the setting, else the system's, else English.
+QString languageFromSettings();
 
 /// Languages the interface ships in, as BCP-47 codes ("en" needs no catalogue).
 QStringList availableLanguages();
@@ -21,4 +27,4 @@ QString chooseLanguage(const QString& setting, const QLocale& system = QLocale::
 /// microsim's catalogue for it could not be loaded (the interface stays in English).
 bool installTranslations(QCoreApplication& app, const QString& language);
 
-}  // namespace microsim::gui
+}  // namespace microsim::i18n

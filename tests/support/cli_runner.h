@@ -1,6 +1,7 @@
 #pragma once
 // Runs the real microsim-cli binary (MICROSIM_CLI_PATH) as a user would, for tests.
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QString>
 #include <QStringList>
 
@@ -14,6 +15,11 @@ struct CliRun {
 
 inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
   QProcess p;
+  // English messages whatever the machine's locale, so tests can match them
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+  env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
+  p.setProcessEnvironment(env);
   p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
   CliRun r;
   if (!p.waitForFinished(timeoutMs)) {

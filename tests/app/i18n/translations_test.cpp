@@ -1,12 +1,11 @@
-#include "gui/main_window.h"
-#include "gui/translations.h"
+#include "i18n/translations.h"
 
 #include <QCoreApplication>
 #include <QTranslator>
 
 #include <gtest/gtest.h>
 
-namespace microsim::gui {
+namespace microsim::i18n {
 namespace {
 
 TEST(Translations, ChoosesTheSettingThenTheSystemThenEnglish) {
@@ -32,4 +31,4 @@ TEST(Translations, GermanCatalogueTranslatesTheWindowTitle) {
 }
 
 }  // namespace
-}  // namespace microsim::gui
+}  // namespace microsim::i18n
