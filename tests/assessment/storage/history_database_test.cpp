@@ -75,6 +75,40 @@ TEST(HistoryDatabase, ForeignFileIsReportedAndLeftUntouched) {
   EXPECT_EQ(f.readAll(), garbage);
 }
 
+TEST(HistoryDatabase, LockedFileIsReportedAndKeepsItsRows) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("history.sqlite"));
+  {
+    HistoryDatabase db;
+    ASSERT_TRUE(db.open(path).ok());
+    QSqlQuery q(db.connection());
+    ASSERT_TRUE(q.exec(QStringLiteral(
+        "INSERT INTO trainees (name, created_at) VALUES ('Ben', '2026-11-22T10:00:00Z')")));
+  }
+  // another program holds an exclusive lock on the file
+  QSqlDatabase holder = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("holder"));
+  {
+    holder.setDatabaseName(path);
+    ASSERT_TRUE(holder.open());
+    QSqlQuery q(holder);
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA locking_mode = EXCLUSIVE")));
+    ASSERT_TRUE(q.exec(QStringLiteral("BEGIN EXCLUSIVE")));
+    HistoryDatabase blocked;
+    EXPECT_EQ(blocked.open(path).error, DatabaseError::Locked);
+    EXPECT_FALSE(blocked.isOpen());
+    ASSERT_TRUE(q.exec(QStringLiteral("COMMIT")));
+    holder.close();
+  }
+  holder = QSqlDatabase();
+  QSqlDatabase::removeDatabase(QStringLiteral("holder"));
+
+  HistoryDatabase after;
+  ASSERT_TRUE(after.open(path).ok());
+  QSqlQuery q(after.connection());
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT name FROM trainees")) && q.next());
+  EXPECT_EQ(q.value(0).toString().toStdString(), "Ben");
+}
+
 TEST(HistoryDatabase, NewerSchemaIsRefused) {
   QTemporaryDir dir;
   const QString path = dir.filePath(QStringLiteral("history.sqlite"));
