@@ -1,10 +1,15 @@
 #include "bench_report.h"
+#include "tissue_benches.h"
 
 namespace microsim::bench {
 
 // Each benchmark lives in its own file and is listed here once.
 const std::vector<BenchEntry>& benchRegistry() {
-  static const std::vector<BenchEntry> entries = {};
+  static const std::vector<BenchEntry> entries = {
+      {"table1", "qss iterations per 1/30 s with and without cutout (paper Table 1)", runTable1},
+      {"fig5", "qss max/mean error vs box size and vs iterations (paper Fig. 5)", runFig5},
+      {"speed-error", "time to 10/1/0.1 % error for every tissue solver, warm and cold", runSpeedError},
+  };
   return entries;
 }
 

@@ -1,0 +1,146 @@
+// speed-error: for every solver, the time to reach 10 %, 1 % and 0.1 % max error
+// (node distance to the reference equilibrium, in % of the cycle's control displacement),
+// warm (the previous cycle's equilibrium, control moved one more step) and cold (rest).
+// Cases: the paper's 20³ box; the default (paper) vessel; the ~40k-node tetrahedral
+// lattice pulled locally; the 20³ box with a 1000:1 stiffness ratio; the fine vessel
+// pulled like the default one (the cost of a local pull should follow the deforming
+// region, not the mesh). peer = qss's time, ratio = qss / ours (> 1: faster than qss).
+#include "bench_report.h"
+#include "tissue_bench_util.h"
+#include "tissue_benches.h"
+
+#include "microsim/sim/mesh/lattice.h"
+#include "microsim/sim/mesh/tetra_lattice.h"
+#include "microsim/sim/mesh/vessel.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace microsim::bench {
+
+using namespace microsim::sim;
+
+namespace {
+
+const std::vector<std::string> kSolvers = {"qss", "rk4", "implicit", "newton"};
+const double kLevels[] = {10.0, 1.0, 0.1};
+
+std::string percentName(double p) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "%g %%", p);
+  return buffer;
+}
+
+/// The n³ box with links in its lower half (both ends below mid-height) 1000 times stiffer.
+SpringModel stiffRatioBox(int n) {
+  const SpringModel box = latticeBox(n, 10.0);
+  SpringModel model;
+  for (int i = 0; i < box.nodeCount(); ++i) model.addNode(box.restPositions().col(i));
+  const double mid = 0.5 * (n - 1);
+  for (const Link& l : box.links()) {
+    const bool lower = box.restPositions()(2, l.a) < mid && box.restPositions()(2, l.b) < mid;
+    model.addLink(l.a, l.b, lower ? 1e4 : 10.0);
+  }
+  for (int i : box.fixedNodes()) model.setFixed(i);
+  model.finalize();
+  return model;
+}
+
+struct Scenario {
+  std::string name;
+  SpringModel model;
+  int node;
+  Vec3 step;
+};
+
+/// Measures every solver on one pull; returns qss-relative rows and a plot, and the
+/// newton time to 1 % (ms, negative when not reached).
+double measure(const PullCase& c, double cap, BenchReport& report) {
+  BenchPlot plot{"max error vs time, " + c.name, "time (ms)", "max error (% of displacement)", true, true, {}};
+  std::map<std::string, ErrorCurve> curves;
+  for (const std::string& solver : kSolvers) {
+    curves[solver] = sweepErrorAgainstTime(c, solver, benchParams(solver), 0.1, cap, 3);
+    plot.curves.push_back({solver, curves[solver].milliseconds, curves[solver].maxPercent});
+  }
+  for (double level : kLevels) {
+    const double qss = curves["qss"].timeTo(level);
+    for (const std::string& solver : kSolvers) {
+      const double t = curves[solver].timeTo(level);
+      BenchRow row;
+      row.bench = "speed-error";
+      row.caseName = c.name + ", " + solver;
+      row.metric = "time to " + percentName(level) + " max error";
+      if (t >= 0.0) {
+        row.value = t;
+        row.unit = "ms";
+      } else {
+        row.value = 1e3 * cap;
+        row.unit = "ms (not reached; cap)";
+      }
+      if (qss >= 0.0) row.peer = qss;
+      if (qss >= 0.0 && t > 0.0) row.ratio = qss / t;
+      report.rows.push_back(row);
+    }
+  }
+  report.plots.push_back(plot);
+  return curves["newton"].timeTo(1.0);
+}
+
+}  // namespace
+
+BenchReport runSpeedError(const BenchOptions& options) {
+  BenchReport report;
+  const bool quick = options.quick;
+  const double cap = quick ? 0.1 : 1.0;
+  const int n = quick ? 8 : 20;
+
+  std::vector<Scenario> scenarios;
+  scenarios.push_back({std::to_string(n) + "^3", latticeBox(n, 10.0), latticeTopMiddle(n), Vec3(0, 0, 1)});
+  const VesselMesh paperVessel = vessel(VesselDef::paper());
+  const int paperRim = paperVessel.node(VesselHull::Outer, paperVessel.def.rings - 1, 0);
+  scenarios.push_back({"vessel (98 nodes)", paperVessel.model, paperRim, Vec3(0, 0, 0.25)});
+  TetraLatticeDef tetraDef;
+  if (quick) {
+    tetraDef.nx = 30;
+    tetraDef.ny = 20;
+  }
+  const TetraMesh tetra = tetraLattice(tetraDef);
+  const int tetraTop = tetraDef.nx / 2 + tetraDef.nx * (tetraDef.ny / 2 + tetraDef.ny * (tetraDef.nz - 1));
+  scenarios.push_back({"tetra " + std::to_string(tetra.model.nodeCount()) + " nodes, local pull", tetra.model,
+                       tetraTop, Vec3(0, 0, 1)});
+  scenarios.push_back({std::to_string(n) + "^3 stiffness 1000:1", stiffRatioBox(n), latticeTopMiddle(n),
+                       Vec3(0, 0, 1)});
+
+  for (const Scenario& s : scenarios)
+    for (int warm = 1; warm >= 0; --warm) {
+      const std::string name = s.name + (warm ? ", warm" : ", cold");
+      const PullCase c = warm ? warmPull(name, s.model, s.node, s.step) : coldPull(name, s.model, s.node, s.step);
+      measure(c, cap, report);
+    }
+
+  // the same local pull on the default and the fine vessel: newton's cost ratio
+  const VesselMesh fineVessel = vessel(quick ? [] {
+    VesselDef d;
+    d.rings = 21;
+    d.nodesPerRing = 20;
+    return d;
+  }() : VesselDef::fine());
+  const int fineRim = fineVessel.node(VesselHull::Outer, fineVessel.def.rings - 1, 0);
+  const PullCase paperWarm = warmPull("vessel (98 nodes), warm", paperVessel.model, paperRim, Vec3(0, 0, 0.25));
+  const PullCase fineWarm =
+      warmPull("fine vessel (" + std::to_string(fineVessel.model.nodeCount()) + " nodes), warm", fineVessel.model,
+               fineRim, Vec3(0, 0, 0.25));
+  const double tFine = measure(fineWarm, cap, report);
+  const double tPaper = sweepErrorAgainstTime(paperWarm, "newton", benchParams("newton"), 0.1, cap, 5).timeTo(1.0);
+  BenchRow row;
+  row.bench = "speed-error";
+  row.caseName = "local pull, fine vs default vessel, newton";
+  row.metric = "cost ratio of reaching 1 % (target <= 3)";
+  row.value = (tFine > 0.0 && tPaper > 0.0) ? tFine / tPaper : -1.0;
+  row.unit = "x";
+  report.rows.push_back(row);
+  return report;
+}
+
+}  // namespace microsim::bench
