@@ -4,8 +4,10 @@
 //      the paper reports max ≈ 2 × mean and max at most ~10 % of the displacement.
 //  (b) max error after one unit displacement vs k = 5, 10, 20, 50, 100, without and with
 //      the cutout, on two boxes.
-// Errors are node distances to the reference equilibrium in % of the 1-unit displacement
-// of the cycle, over all nodes (fixed ones included, as in the paper's average).
+// Errors are node distances to the reference equilibrium in % of the control node's
+// displacement from rest (c units after cycle c: the paper's "magnitude of the
+// displacement of the control node"), over all nodes (fixed ones included, as in the
+// paper's average).
 #include "bench_report.h"
 #include "tissue_bench_util.h"
 #include "tissue_benches.h"
@@ -22,6 +24,10 @@ using namespace microsim::sim;
 namespace {
 
 constexpr double kCutout = 1e-3;  ///< mm, as in table1
+
+/// qss as the paper tuned it: the largest step that still converges (ω = 1.5, see
+/// benchParams).
+SolverParams qssParams() { return benchParams("qss"); }
 
 SpringControls topAt(const SpringModel& model, int n, double z) {
   SpringControls c;
@@ -65,7 +71,7 @@ BenchReport runFig5(const BenchOptions& options) {
   }
   for (int n : sizes) {
     const SpringModel model = latticeBox(n, 10.0);
-    auto solver = makeSolver("qss");
+    auto solver = makeSolver("qss", qssParams());
     SpringState state = SpringState::atRest(model);
     SpringState reference = state;
     double worstMax = 0.0, worstMean = 0.0;
@@ -75,7 +81,9 @@ BenchReport runFig5(const BenchOptions& options) {
       budget.maxIterations = 10;
       solver->solve(model, state, controls, budget);
       reference = referenceEquilibrium(model, reference, controls);
-      const Errors e = errorAgainst(state.x, reference.x);
+      Errors e = errorAgainst(state.x, reference.x);
+      e.maxPercent /= cycle;  // of the control node's displacement so far
+      e.meanPercent /= cycle;
       worstMax = std::max(worstMax, e.maxPercent);
       worstMean = std::max(worstMean, e.meanPercent);
       maxCurves[cycle - 1].x.push_back(model.nodeCount());
@@ -102,7 +110,7 @@ BenchReport runFig5(const BenchOptions& options) {
     for (int c = 0; c < 2; ++c) {
       BenchCurve curve{std::to_string(n) + "^3 " + (c == 0 ? "without cutout" : "with cutout"), {}, {}};
       for (int k : {5, 10, 20, 50, 100}) {
-        SolverParams params;
+        SolverParams params = qssParams();
         params.cutout = c == 0 ? 0.0 : kCutout;
         SpringState state = SpringState::atRest(model);
         SolveBudget budget;

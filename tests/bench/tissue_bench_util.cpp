@@ -66,6 +66,7 @@ double ErrorCurve::timeTo(double percent) const {
 SolverParams benchParams(const std::string& solverName) {
   SolverParams p;
   if (solverName == "rk4" || solverName == "implicit") p.damping = 6.0;
+  if (solverName == "qss") p.relaxation = 1.7;
   return p;
 }
 

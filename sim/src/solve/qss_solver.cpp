@@ -42,6 +42,7 @@ class QssSolver final : public TissueSolver {
     const double tolerance = budget.residualTolerance * scale;
     const double beta = std::clamp(params_.momentum, 0.0, 0.999);
     const double eps = params_.cutout;
+    const double omega = std::clamp(params_.relaxation, 1e-3, 1.99);
     const Vec3 g = model.gravity;
     Points& x = state.x;
     double start = -1.0;
@@ -75,7 +76,7 @@ class QssSolver final : public TissueSolver {
             kd += springTensionDerivative(nb.k, nb.rest, nb.c, l);
           }
           worst = std::max(worst, f.squaredNorm());
-          const double alpha = params_.alpha > 0.0 ? params_.alpha : (kd > 0.0 ? 1.0 / kd : 0.0);
+          const double alpha = params_.alpha > 0.0 ? params_.alpha : (kd > 0.0 ? omega / kd : 0.0);
           Vec3 step = alpha * f;
           if (beta > 0.0) {
             step += beta * direction_.col(i);

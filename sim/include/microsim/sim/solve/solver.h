@@ -42,6 +42,7 @@ struct SolveReport {
 struct SolverParams {
   double timeStep = 1.0 / 30.0;  ///< s: one cycle of the paper's simulation (rk4, implicit)
   double alpha = 0.0;            ///< qss step scale (mm per force unit); 0 = chosen from the model
+  double relaxation = 1.0;       ///< qss: ω in the per-node α_i = ω / Σ_j T'_ij (alpha = 0), in (0, 2)
   double cutout = 0.0;           ///< qss per-level cutout ε (mm); 0 = off
   double momentum = 0.0;         ///< qss momentum β in [0, 1) (the paper's "CG-style" variant)
   double damping = 0.0;          ///< g/s: added to every node's own damping (rk4, implicit)
