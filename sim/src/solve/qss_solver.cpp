@@ -45,6 +45,7 @@ class QssSolver final : public TissueSolver {
     const double omega = std::clamp(params_.relaxation, 1e-3, 1.99);
     const Vec3 g = model.gravity;
     Points& x = state.x;
+    const std::vector<double>& mg = model.masses();
     double start = -1.0;
 
     report.status = SolveStatus::IterationLimit;
@@ -60,21 +61,30 @@ class QssSolver final : public TissueSolver {
         double moved = 0.0;
         for (int p = ordering_.levelStart[level]; p < ordering_.levelStart[level + 1]; ++p) {
           const int i = ordering_.order[p];
-          const Vec3 xi = x.col(i);
-          Vec3 f = model.mass(i) * g;
+          const double* xi = x.data() + 3 * i;
+          const double xi0 = xi[0], xi1 = xi[1], xi2 = xi[2];
+          double f0 = mg[i] * g.x(), f1 = mg[i] * g.y(), f2 = mg[i] * g.z();
           double kd = 0.0;
+          const bool linear = linear_[p];
           for (int e = start_[p]; e < start_[p + 1]; ++e) {
             const Neighbour& nb = neighbours_[e];
-            const Vec3 d = x.col(nb.node) - xi;
-            const double l = d.norm();
+            const double* xj = x.data() + 3 * nb.node;
+            const double d0 = xj[0] - xi0, d1 = xj[1] - xi1, d2 = xj[2] - xi2;
+            const double l = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+            double s;
             if (l < kMinLength) {
-              if (nb.rest <= kMinLength) f += nb.k * d;
-              kd += nb.k;
-              continue;
+              s = nb.rest <= kMinLength ? nb.k : 0.0;
+              if (!linear) kd += nb.k;
+            } else {
+              s = springTensionOverLength(nb.k, nb.rest, nb.c, l);
+              if (!linear) kd += springTensionDerivative(nb.k, nb.rest, nb.c, l);
             }
-            f += springTensionOverLength(nb.k, nb.rest, nb.c, l) * d;
-            kd += springTensionDerivative(nb.k, nb.rest, nb.c, l);
+            f0 += s * d0;
+            f1 += s * d1;
+            f2 += s * d2;
           }
+          if (linear) kd = linearStiffness_[p];
+          const Vec3 f(f0, f1, f2);
           worst = std::max(worst, f.squaredNorm());
           const double alpha = params_.alpha > 0.0 ? params_.alpha : (kd > 0.0 ? omega / kd : 0.0);
           Vec3 step = alpha * f;
@@ -82,7 +92,7 @@ class QssSolver final : public TissueSolver {
             step += beta * direction_.col(i);
             direction_.col(i) = step;
           }
-          x.col(i) = xi + step;
+          x.col(i) = Vec3(xi0, xi1, xi2) + step;
           moved = std::max(moved, step.squaredNorm());
         }
         if (moved < eps * eps) break;
@@ -130,13 +140,22 @@ class QssSolver final : public TissueSolver {
     ordering_ = computeNodeOrdering(model, key_.seeds, freeMask(model, controls));
     start_.assign(1, 0);
     neighbours_.clear();
+    linear_.clear();
+    linearStiffness_.clear();
     for (int i : ordering_.order) {
+      // constant-law links have T' = k: their node's Σ T' is fixed
+      bool linear = true;
+      double kSum = 0.0;
       for (int li : model.linksOf(i)) {
         const Link& link = model.link(li);
         if (!link.alive) continue;
         neighbours_.push_back({model.otherEnd(li, i), link.k, link.rest, stiffeningCoefficient(link)});
+        linear = linear && neighbours_.back().c == 0.0;
+        kSum += link.k;
       }
       start_.push_back(static_cast<int>(neighbours_.size()));
+      linear_.push_back(linear ? 1 : 0);
+      linearStiffness_.push_back(kSum);
     }
     direction_ = Points::Zero(3, model.nodeCount());
   }
@@ -146,6 +165,8 @@ class QssSolver final : public TissueSolver {
   NodeOrdering ordering_;
   std::vector<int> start_;             ///< neighbours_ of order[p]: [start_[p], start_[p + 1])
   std::vector<Neighbour> neighbours_;
+  std::vector<unsigned char> linear_;  ///< per order position: every link has T' = k
+  std::vector<double> linearStiffness_;  ///< per order position: Σ k of its links
   Points direction_;                   ///< momentum: last step of every node (mm)
 };
 
