@@ -11,16 +11,13 @@ namespace {
 // twice the exact tests' tolerance (tolerance.h), so a volume never rejects what they accept
 constexpr double kInflate = 2e-12;
 
-// the radius that reaches every given point from the centre, slightly inflated
+// the radius that reaches every given point from the centre, slightly inflated; every point
+// lies within r of the centre, so |centre|∞ + r bounds the coordinates' scale
 double reach(const Vec3& centre, std::initializer_list<const Vec3*> points) {
   double r2 = 0.0;
-  double scale = centre.cwiseAbs().maxCoeff();
-  for (const Vec3* p : points) {
-    r2 = std::max(r2, (*p - centre).squaredNorm());
-    scale = std::max(scale, p->cwiseAbs().maxCoeff());
-  }
+  for (const Vec3* p : points) r2 = std::max(r2, (*p - centre).squaredNorm());
   const double r = std::sqrt(r2);
-  return r + kInflate * (r + scale);
+  return r + kInflate * (2.0 * r + centre.cwiseAbs().maxCoeff());
 }
 
 }  // namespace
