@@ -6,8 +6,8 @@ namespace microsim::cli {
 
 std::vector<Command> commands() {
   return {
-
-
+      {QStringLiteral("solve"), Cli::tr("solve a spring network (scene file or lattice box)"), &runSolve},
+      {QStringLiteral("export"), Cli::tr("export the spring network a scene builds"), &runExport},
       {QStringLiteral("bench"), Cli::tr("run a benchmark (beside the paper's figures)"), &runBench},
   };
 }

@@ -4,8 +4,8 @@
 
 namespace microsim::cli {
 
-
-
+int runSolve(const QStringList& args, Streams& io);
+int runExport(const QStringList& args, Streams& io);
 int runBench(const QStringList& args, Streams& io);
 
 }  // namespace microsim::cli
