@@ -1,0 +1,89 @@
+#pragma once
+// The suture's constraints (Brown et al. 2002 §4) and what they do beyond holding nodes:
+// sliding through soft constraints, breaking between hard ones, and the rigid needle.
+//
+// Hard constraints are grips: a forceps holds node `node` at `position` (and, when it holds the
+// needle with `oriented`, the whole needle in the pose `rotation`). Soft constraints are
+// pierces (suture_model.h): the suture passes through a point on a tissue face.
+//
+// Sliding. Around each active pierce P at node c, look at its two sides: the neighbouring
+// constraint Q (grip or pierce) on each side, or the chain's free end. A side's stretch is
+//     σ = |P − Q| / arc(c, q)       (0 towards a free end, which can always feed thread)
+// — the straight distance the side must span over the rest length it has. When one side is
+// taut (σ > 1 + slideTolerance) and tighter than the other, the suture slides through the
+// pierce one node towards the slack side (the taut side gains a link), and again while that
+// lowers max(σ_left, σ_right). The pierce point stays on the tissue; only `node` changes. A
+// pierce whose node would slide past a free end has let the suture go (SutureEventKind
+// PulledOut). A pierce on a needle node is passive: the rigid needle carries the suture, and
+// `node` follows the needle node nearest the point until it reaches the thread.
+//
+// Breaking. Between two consecutive grips a and b of one piece, the path the suture must
+// span runs through the pierce points between them: L = Σ |P_k − P_{k+1}|. When
+// L > arc(a, b)·(1 + breakStretch) the suture breaks (SutureEventKind::Break) at the link of
+// a..b that is stretched most (the lowest index on ties), leaving two free pieces.
+//
+// Units: millimetres, seconds.
+
+#include "microsim/sim/suture/suture_model.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace microsim::sim::suture {
+
+/// A hard constraint: a forceps holding a node.
+struct Grip {
+  int node = 0;
+  Vec3 position = Vec3::Zero();                        ///< mm
+  bool oriented = false;                               ///< holds the needle's pose too
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< needle frame → world (oriented)
+};
+
+enum class SutureEventKind : std::uint8_t {
+  Break,      ///< a link broke between two hard constraints (link = the broken link)
+  PulledOut,  ///< the suture slid off its end through a pierce (pierce = its index before removal)
+};
+
+struct SutureEvent {
+  SutureEventKind kind = SutureEventKind::Break;
+  int link = -1;     ///< Break: the broken link
+  int pierce = -1;   ///< PulledOut: the pierce's index in SutureState::pierces before removal
+  double time = 0.0; ///< s
+};
+
+/// A constraint on the chain in node order: a grip (hard) or an active pierce (soft).
+struct ChainConstraint {
+  int node = 0;
+  Vec3 position = Vec3::Zero();
+  bool hard = false;
+  int source = -1;  ///< index into the grips or the pierces
+};
+
+/// Grips and active pierces of the piece [first, last], sorted by node (a grip wins a tie).
+std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
+                                              std::span<const Grip> grips, const Piece& piece);
+
+/// The sliding rule of the header essay for every active pierce; updates their nodes, tracks
+/// passive (needle) pierces, removes pulled-out ones. Returns the number of one-node slides.
+int slidePierces(const SutureModel& model, SutureState& state, std::span<const Grip> grips,
+                 double slideTolerance, std::vector<SutureEvent>& events);
+
+/// The breaking rule of the header essay: the link that breaks, if any (the first pair of
+/// grips over the threshold in node order).
+std::optional<int> findBreak(const SutureModel& model, const SutureState& state,
+                             std::span<const Grip> grips);
+
+/// Restores the needle's rest shape about node `anchor` (a needle node or the swage): with a
+/// rotation, x_k = x_anchor + R (r_k − r_anchor); without, R is the best fit (Kabsch) of the
+/// rest shape to the current needle nodes. No-op without a needle.
+void rigidifyNeedle(const SutureModel& model, Points& x, int anchor,
+                    const Eigen::Matrix3d* rotation = nullptr);
+
+/// The needle's current rotation (needle frame → world), best fit to its nodes.
+Eigen::Matrix3d needleRotation(const SutureModel& model, const Points& x);
+
+}  // namespace microsim::sim::suture

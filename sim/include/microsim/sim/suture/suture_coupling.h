@@ -1,0 +1,53 @@
+#pragma once
+// Coupling of the suture and the tissue at pierce points (Brown et al. 2002 §4, Fig. 7),
+// without touching the tissue solvers.
+//
+// Each frame, in this order:
+//   1. readPiercePoints: every pierce point is re-read from the tissue, P = u a + v b + w c
+//      for its face (a, b, c) and barycentrics (u, v, w), so the suture follows the vessel;
+//   2. the suture steps (suture_solver.h): it slides through the pierces to relieve stretch;
+//   3. couplingControls: what stretch sliding could not relieve pulls the tissue. For a pierce
+//      P whose side towards the neighbouring constraint Q (grip or pierce) must span more than
+//      its rest arc, the side pulls P towards Q by the excess:
+//          pull(P) = Σ_sides max(0, |Q − P| − arc) · (Q − P)/|Q − P|     (mm)
+//      — the displacement that would make the sides exactly taut, to first order. Each free
+//      (not fixed) corner node of the pierced face becomes a control node with target
+//      x_node + gain · pull(P) (pulls of several pierces on one node are averaged), which the
+//      existing tissue solvers honour as SpringControls (a forceps grab does the same).
+//   4. the tissue solves with those controls; the next frame reads the moved points back.
+// The suture is inextensible and the tissue yields: gain ∈ (0, 1] is the fraction of the
+// excess the tissue takes per frame (1 = at once; less damps the exchange).
+//
+// Units: millimetres.
+
+#include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/suture/suture_constraints.h"
+#include "microsim/sim/suture/suture_model.h"
+
+#include <span>
+#include <vector>
+
+namespace microsim::sim::suture {
+
+struct CouplingParams {
+  double gain = 1.0;  ///< fraction of the excess length the tissue takes per frame, (0, 1]
+};
+
+/// The point u a + v b + w c of tissue face `face` (mm).
+Vec3 tissuePoint(const SpringModel& tissue, const Points& tissueX, int face, const Vec3& barycentric);
+
+/// Re-reads every pierce point from the tissue positions (3 by #tissue nodes).
+void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureState& state);
+
+/// pull(P) of the header essay for each pierce, in SutureState::pierces order (mm); zero for
+/// passive pierces (on the needle) and for pierces with no taut side.
+std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
+                              std::span<const Grip> grips);
+
+/// The control-node targets that let the tissue solver follow the suture's pull (nodes sorted,
+/// fixed nodes left out); empty when nothing pulls.
+SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
+                                const SutureModel& model, const SutureState& state,
+                                std::span<const Grip> grips, const CouplingParams& params = {});
+
+}  // namespace microsim::sim::suture

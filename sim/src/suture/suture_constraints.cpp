@@ -1,0 +1,177 @@
+#include "microsim/sim/suture/suture_constraints.h"
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <limits>
+
+namespace microsim::sim::suture {
+
+namespace {
+
+bool activePierce(const SutureModel& model, const Pierce& p) { return p.node >= model.swage(); }
+
+// stretch of the side from pierce node c to neighbour (node q at Q); free end: 0
+double sideStretch(const SutureModel& model, int c, const Vec3& p, const ChainConstraint* q) {
+  if (q == nullptr) return 0.0;
+  const double distance = (p - q->position).norm();
+  const double arc = model.arc(c, q->node);
+  if (arc <= 0.0) return distance > 0.0 ? std::numeric_limits<double>::max() : 0.0;
+  return distance / arc;
+}
+
+}  // namespace
+
+std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
+                                              std::span<const Grip> grips, const Piece& piece) {
+  std::vector<ChainConstraint> out;
+  for (std::size_t g = 0; g < grips.size(); ++g)
+    if (grips[g].node >= piece.first && grips[g].node <= piece.last)
+      out.push_back({grips[g].node, grips[g].position, true, static_cast<int>(g)});
+  for (std::size_t k = 0; k < state.pierces.size(); ++k) {
+    const Pierce& p = state.pierces[k];
+    if (activePierce(model, p) && p.node >= piece.first && p.node <= piece.last)
+      out.push_back({p.node, p.point, false, static_cast<int>(k)});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const ChainConstraint& a, const ChainConstraint& b) {
+    return a.node != b.node ? a.node < b.node : a.hard > b.hard;
+  });
+  return out;
+}
+
+int slidePierces(const SutureModel& model, SutureState& state, std::span<const Grip> grips,
+                 double slideTolerance, std::vector<SutureEvent>& events) {
+  int slides = 0;
+  const int swage = model.swage();
+
+  // passive pierces follow the needle node nearest their point
+  for (Pierce& p : state.pierces) {
+    if (activePierce(model, p)) continue;
+    int best = 0;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= std::min(swage, model.nodeCount() - 1); ++k) {
+      const double d = (state.x.col(k) - p.point).squaredNorm();
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = k;
+      }
+    }
+    p.node = best;
+  }
+
+  std::vector<int> pulledOut;
+  for (const Piece& piece : chainPieces(state.alive)) {
+    std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      if (cs[k].hard) continue;
+      ChainConstraint& me = cs[k];
+      const ChainConstraint* left = k > 0 ? &cs[k - 1] : nullptr;
+      const ChainConstraint* right = k + 1 < cs.size() ? &cs[k + 1] : nullptr;
+      // the node may not pass its neighbours, nor leave the thread
+      const int lo = left ? left->node + 1 : std::max(piece.first, swage);
+      const int hi = right ? right->node - 1 : piece.last;
+      const auto worst = [&](int c) {
+        return std::max(sideStretch(model, c, me.position, left),
+                        sideStretch(model, c, me.position, right));
+      };
+      // slide one node at a time while it lowers the tighter side's stretch
+      bool out = false;
+      for (;;) {
+        const double sl = sideStretch(model, me.node, me.position, left);
+        const double sr = sideStretch(model, me.node, me.position, right);
+        if (std::max(sl, sr) <= 1.0 + slideTolerance) break;
+        const int next = sr > sl ? me.node - 1 : me.node + 1;
+        if (next < lo || next > hi) {
+          // past a free end the suture leaves the pierce
+          const bool freeEnd = (next < lo && !left && lo == piece.first) ||
+                               (next > hi && !right);
+          out = freeEnd;
+          break;
+        }
+        if (worst(next) >= worst(me.node)) break;
+        me.node = next;
+        ++slides;
+      }
+      state.pierces[static_cast<std::size_t>(me.source)].node = me.node;
+      if (out) pulledOut.push_back(me.source);
+    }
+  }
+
+  // remove pulled-out pierces, highest index first so earlier indices stay valid
+  std::sort(pulledOut.begin(), pulledOut.end());
+  for (auto it = pulledOut.rbegin(); it != pulledOut.rend(); ++it) {
+    events.push_back({SutureEventKind::PulledOut, -1, *it, state.time});
+    state.pierces.erase(state.pierces.begin() + *it);
+  }
+  return slides;
+}
+
+std::optional<int> findBreak(const SutureModel& model, const SutureState& state,
+                             std::span<const Grip> grips) {
+  const double limit = 1.0 + model.def().breakStretch;
+  for (const Piece& piece : chainPieces(state.alive)) {
+    const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    std::size_t from = cs.size();
+    double path = 0.0;
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      if (from < cs.size()) path += (cs[k].position - cs[k - 1].position).norm();
+      if (!cs[k].hard) continue;
+      // a pair of grips: the path through the pierces between them against the rest arc
+      if (from < cs.size() && cs[k].node > cs[from].node &&
+          path > model.arc(cs[from].node, cs[k].node) * limit) {
+        // the needle is rigid: only thread links break
+        const int firstLink = std::max(cs[from].node, std::min(model.swage(), cs[k].node - 1));
+        int worst = firstLink;
+        double worstStretch = -std::numeric_limits<double>::infinity();
+        for (int l = firstLink; l < cs[k].node; ++l) {
+          const double s = (state.x.col(l + 1) - state.x.col(l)).norm() / model.rest(l);
+          if (s > worstStretch) {
+            worstStretch = s;
+            worst = l;
+          }
+        }
+        return worst;
+      }
+      from = k;
+      path = 0.0;
+    }
+  }
+  return std::nullopt;
+}
+
+Eigen::Matrix3d needleRotation(const SutureModel& model, const Points& x) {
+  const int n = model.needleLinks();
+  if (n == 0) return Eigen::Matrix3d::Identity();
+  const Points& r = model.needleShape();
+  const Vec3 rc = r.rowwise().mean();
+  const Vec3 xc = x.leftCols(n + 1).rowwise().mean();
+  const Eigen::Matrix3d h = (r.colwise() - rc) * (x.leftCols(n + 1).colwise() - xc).transpose();
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  return svd.matrixV() * d * svd.matrixU().transpose();
+}
+
+void rigidifyNeedle(const SutureModel& model, Points& x, int anchor,
+                    const Eigen::Matrix3d* rotation) {
+  const int n = model.needleLinks();
+  if (n == 0) return;
+  const Points& r = model.needleShape();
+  Eigen::Matrix3d rot;
+  if (rotation) {
+    rot = *rotation;
+  } else {
+    // best rotation about the anchor (Kabsch on offsets from it)
+    const Eigen::Matrix3d h = (r.colwise() - Vec3(r.col(anchor))) *
+                              (x.leftCols(n + 1).colwise() - Vec3(x.col(anchor))).transpose();
+    Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+    d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+    rot = svd.matrixV() * d * svd.matrixU().transpose();
+  }
+  const Vec3 origin = x.col(anchor);
+  for (int k = 0; k <= n; ++k)
+    if (k != anchor) x.col(k) = origin + rot * (r.col(k) - r.col(anchor));
+}
+
+}  // namespace microsim::sim::suture

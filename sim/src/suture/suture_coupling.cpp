@@ -1,0 +1,64 @@
+#include "microsim/sim/suture/suture_coupling.h"
+
+#include <map>
+#include <utility>
+
+namespace microsim::sim::suture {
+
+Vec3 tissuePoint(const SpringModel& tissue, const Points& tissueX, int face,
+                 const Vec3& barycentric) {
+  const std::array<int, 3>& t = tissue.triangles()[static_cast<std::size_t>(face)];
+  return barycentric.x() * tissueX.col(t[0]) + barycentric.y() * tissueX.col(t[1]) +
+         barycentric.z() * tissueX.col(t[2]);
+}
+
+void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureState& state) {
+  for (Pierce& p : state.pierces) p.point = tissuePoint(tissue, tissueX, p.face, p.barycentric);
+}
+
+std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
+                              std::span<const Grip> grips) {
+  std::vector<Vec3> pulls(state.pierces.size(), Vec3::Zero());
+  for (const Piece& piece : chainPieces(state.alive)) {
+    const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      if (cs[k].hard) continue;
+      // each side towards a neighbouring constraint pulls by its excess length
+      Vec3 pull = Vec3::Zero();
+      for (const std::size_t q : {k - 1, k + 1}) {
+        if (q >= cs.size()) continue;  // k − 1 wraps to a huge value at k = 0
+        const Vec3 toQ = cs[q].position - cs[k].position;
+        const double distance = toQ.norm();
+        const double excess = distance - model.arc(cs[k].node, cs[q].node);
+        if (excess > 0.0 && distance > 0.0) pull += excess * toQ / distance;
+      }
+      pulls[static_cast<std::size_t>(cs[k].source)] = pull;
+    }
+  }
+  return pulls;
+}
+
+SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
+                                const SutureModel& model, const SutureState& state,
+                                std::span<const Grip> grips, const CouplingParams& params) {
+  const std::vector<Vec3> pulls = piercePulls(model, state, grips);
+
+  // average the pulls that reach each free corner node (ordered map: deterministic)
+  std::map<int, std::pair<Vec3, int>> perNode;
+  for (std::size_t k = 0; k < pulls.size(); ++k) {
+    if (pulls[k].isZero(0.0)) continue;
+    for (int node : tissue.triangles()[static_cast<std::size_t>(state.pierces[k].face)]) {
+      if (tissue.isFixed(node)) continue;
+      auto [it, inserted] = perNode.try_emplace(node, Vec3::Zero(), 0);
+      it->second.first += pulls[k];
+      it->second.second += 1;
+    }
+  }
+
+  SpringControls controls;
+  for (const auto& [node, sum] : perNode)
+    controls.add(node, Vec3(tissueX.col(node)) + params.gain * sum.first / sum.second);
+  return controls;
+}
+
+}  // namespace microsim::sim::suture

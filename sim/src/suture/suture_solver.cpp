@@ -1,0 +1,218 @@
+#include "microsim/sim/suture/suture_solver.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace microsim::sim::suture {
+
+namespace {
+
+bool finite(const Points& x) { return x.allFinite(); }
+
+bool validInput(const SutureModel& model, const SutureState& state, std::span<const Grip> grips,
+                const SutureStepParams& params) {
+  if (state.x.cols() != model.nodeCount() || state.xPrev.cols() != model.nodeCount() ||
+      static_cast<int>(state.alive.size()) != model.linkCount())
+    return false;
+  if (!finite(state.x) || !finite(state.xPrev)) return false;
+  if (!(params.dt > 0.0) || !std::isfinite(params.dt) || params.substeps < 1 ||
+      params.iterations < 1)
+    return false;
+  for (const Grip& g : grips)
+    if (g.node < 0 || g.node >= model.nodeCount() || !g.position.allFinite() ||
+        !g.rotation.allFinite())
+      return false;
+  for (const Pierce& p : state.pierces)
+    if (p.node < 0 || p.node >= model.nodeCount() || !p.point.allFinite()) return false;
+  return true;
+}
+
+// leaders plus contact nodes (at their current positions), sorted by node
+std::vector<Leader> withContacts(std::span<const Leader> leaders, const Points& x,
+                                 const std::vector<std::uint8_t>& contact) {
+  std::vector<Leader> out;
+  out.reserve(leaders.size());
+  std::size_t k = 0;
+  for (int i = 0; i < static_cast<int>(contact.size()); ++i) {
+    if (k < leaders.size() && leaders[k].node == i) {
+      out.push_back(leaders[k++]);
+    } else if (contact[static_cast<std::size_t>(i)]) {
+      out.push_back({i, x.col(i)});
+    }
+  }
+  return out;
+}
+
+// the paper's follow-the-leader; a piece nothing holds follows its first node
+class FollowTheLeaderSolver final : public SutureSolver {
+ public:
+  std::string_view name() const override { return "ftl"; }
+
+ protected:
+  void restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+                      std::span<const Leader> leaders, const std::vector<std::uint8_t>& contact,
+                      const SutureStepParams&) override {
+    std::vector<Leader> all = withContacts(leaders, x, contact);
+    for (const Piece& piece : chainPieces(alive)) {
+      const bool held = std::any_of(all.begin(), all.end(), [&](const Leader& l) {
+        return l.node >= piece.first && l.node <= piece.last;
+      });
+      if (!held) all.push_back({piece.first, x.col(piece.first)});
+    }
+    std::sort(all.begin(), all.end(), [](const Leader& a, const Leader& b) { return a.node < b.node; });
+    followTheLeader(model, x, alive, all);
+  }
+};
+
+// follow-the-leader as predictor, exact lengths by the tridiagonal projection
+class DirectSolver final : public SutureSolver {
+ public:
+  std::string_view name() const override { return "direct"; }
+
+ protected:
+  void restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+                      std::span<const Leader> leaders, const std::vector<std::uint8_t>& contact,
+                      const SutureStepParams& params) override {
+    const std::vector<Leader> all = withContacts(leaders, x, contact);
+    followTheLeader(model, x, alive, all);
+
+    // weights: thread nodes 1, leaders 0, contact nodes scaled down
+    const double unit = model.inverseMass(model.nodeCount() - 1);
+    w_.resize(static_cast<std::size_t>(model.nodeCount()));
+    for (int i = 0; i < model.nodeCount(); ++i)
+      w_[static_cast<std::size_t>(i)] =
+          model.inverseMass(i) / unit * (contact[static_cast<std::size_t>(i)] ? params.contactWeight : 1.0);
+    for (const Leader& l : leaders) w_[static_cast<std::size_t>(l.node)] = 0.0;
+    projectChainLengths(x, model.restLengths(), w_, alive, params.projectionIterations,
+                        params.projectionTolerance, scratch_);
+  }
+
+ private:
+  std::vector<double> w_;
+  ChainProjectionScratch scratch_;
+};
+
+}  // namespace
+
+SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state,
+                                    std::span<const Grip> grips, const SutureWorld& world,
+                                    const SutureStepParams& params) {
+  SutureStepReport report;
+  if (!validInput(model, state, grips, params)) {
+    report.status = SutureStepStatus::InvalidInput;
+    return report;
+  }
+  const int nodes = model.nodeCount();
+  const int swage = model.swage();
+  const double radius = model.def().contactRadius;
+  const double mu = model.def().friction;
+  if (self_.linkCount() != model.linkCount()) self_ = SelfContact(model.linkCount());
+  const int selfSkip =
+      std::max(2, static_cast<int>(std::ceil(2.0 * radius / model.rest(model.linkCount() - 1))) + 1);
+
+  // where the grips start from: their nodes now, and the needle's pose
+  std::vector<Vec3> gripFrom(grips.size());
+  for (std::size_t g = 0; g < grips.size(); ++g) gripFrom[g] = state.x.col(grips[g].node);
+  const Eigen::Quaterniond needleFrom(needleRotation(model, state.x));
+
+  std::vector<std::uint8_t> movable(static_cast<std::size_t>(nodes));
+  std::vector<std::uint8_t> movableSurface(static_cast<std::size_t>(nodes));
+  std::vector<std::uint8_t> contact(static_cast<std::size_t>(nodes));
+  std::vector<ContactExemption> exemptions;
+  std::vector<Grip> current(grips.begin(), grips.end());
+  const double h = params.dt / params.substeps;
+  const double keep = std::exp(-model.def().drag * h);
+
+  for (int s = 0; s < params.substeps; ++s) {
+    const double f = static_cast<double>(s + 1) / params.substeps;
+
+    // predict
+    xStart_ = state.x;
+    const Vec3 fall = model.gravity * h * h;
+    state.x = state.x + keep * (state.x - state.xPrev);
+    state.x.colwise() += fall;
+    state.xPrev = xStart_;
+
+    // leaders: interpolated grips (an oriented needle grip poses the needle), active pierces
+    leaders_.clear();
+    int needleAnchor = swage;
+    bool needleHeld = false;
+    Eigen::Matrix3d needlePose = needleFrom.toRotationMatrix();
+    for (std::size_t g = 0; g < grips.size(); ++g) {
+      current[g].position = (1.0 - f) * gripFrom[g] + f * grips[g].position;
+      leaders_.push_back({grips[g].node, current[g].position});
+      if (grips[g].node <= swage && model.needleLinks() > 0 && !needleHeld) {
+        needleHeld = true;
+        needleAnchor = grips[g].node;
+        if (grips[g].oriented)
+          needlePose = needleFrom.slerp(f, Eigen::Quaterniond(grips[g].rotation)).toRotationMatrix();
+      }
+    }
+    if (needleHeld) {
+      // a held needle keeps its pose (or turns to the grip's): every needle node is posed
+      const Points& r = model.needleShape();
+      Vec3 target = Vec3::Zero();
+      for (const Leader& a : leaders_)
+        if (a.node == needleAnchor) target = a.position;
+      for (int k = 0; k <= swage; ++k)
+        if (k != needleAnchor)
+          leaders_.push_back({k, target + needlePose * (r.col(k) - r.col(needleAnchor))});
+    }
+    for (const Pierce& p : state.pierces)
+      if (p.node >= swage) leaders_.push_back({p.node, p.point});
+    std::stable_sort(leaders_.begin(), leaders_.end(),
+                     [](const Leader& a, const Leader& b) { return a.node < b.node; });
+    leaders_.erase(std::unique(leaders_.begin(), leaders_.end(),
+                               [](const Leader& a, const Leader& b) { return a.node == b.node; }),
+                   leaders_.end());
+
+    // who contacts may move; pierced faces do not push the thread passing through them
+    std::fill(movable.begin(), movable.end(), std::uint8_t{1});
+    for (const Leader& l : leaders_) movable[static_cast<std::size_t>(l.node)] = 0;
+    movableSurface = movable;
+    for (int k = 0; k < std::min(swage, nodes); ++k) movableSurface[static_cast<std::size_t>(k)] = 0;
+    exemptions.clear();
+    for (const Pierce& p : state.pierces)
+      exemptions.push_back({std::max(0, p.node - 3), p.node + 3, p.face});
+
+    for (int it = 0; it < params.iterations; ++it) {
+      // contacts: the nodes they correct become soft leaders of this round
+      std::fill(contact.begin(), contact.end(), std::uint8_t{0});
+      for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
+      report.contactNodes =
+          projectCapsuleContacts(state.x, xStart_, world.capsules, radius, mu, movable, contact);
+      if (world.surface)
+        report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, mu,
+                                                      movableSurface, exemptions, contact);
+      report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, mu, selfSkip,
+                                                            movable, state.alive)
+                                            : 0;
+
+      // lengths, then the rigid needle
+      restoreLengths(model, state.x, state.alive, leaders_, contact, params);
+      if (model.needleLinks() > 0 && !needleHeld) rigidifyNeedle(model, state.x, swage);
+    }
+
+    // slide through pierces, then break between grips
+    state.time += h;
+    report.slides += slidePierces(model, state, current, params.slideTolerance, report.events);
+    if (const std::optional<int> link = findBreak(model, state, current)) {
+      state.alive[static_cast<std::size_t>(*link)] = 0;
+      report.events.push_back({SutureEventKind::Break, *link, -1, state.time});
+    }
+  }
+  report.maxStretch = maxAbsStretch(model, state.x, state.alive);
+  return report;
+}
+
+std::unique_ptr<SutureSolver> makeSutureSolver(std::string_view name) {
+  if (name == "ftl") return std::make_unique<FollowTheLeaderSolver>();
+  if (name == "direct") return std::make_unique<DirectSolver>();
+  return nullptr;
+}
+
+std::vector<std::string> sutureSolverNames() { return {"ftl", "direct"}; }
+
+}  // namespace microsim::sim::suture
