@@ -15,7 +15,9 @@ namespace microsim::cli {
 
 namespace {
 
-nlohmann::json vec3(const sim::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+nlohmann::json vec3(const sim::Vec3& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 nlohmann::json networkJson(const sim::SpringScene& scene) {
   const sim::SpringModel& m = scene.model;
@@ -46,7 +48,8 @@ nlohmann::json networkJson(const sim::SpringScene& scene) {
 
   nlohmann::json controls = nlohmann::json::array();
   for (int c = 0; c < scene.controls.size(); ++c)
-    controls.push_back({{"node", scene.controls.nodes[c]}, {"target", vec3(scene.controls.targets.col(c))}});
+    controls.push_back(
+        {{"node", scene.controls.nodes[c]}, {"target", vec3(scene.controls.targets.col(c))}});
   doc["controls"] = std::move(controls);
 
   nlohmann::json triangles = nlohmann::json::array();
@@ -73,8 +76,11 @@ nlohmann::json networkJson(const sim::SpringScene& scene) {
 int runExport(const QStringList& args, Streams& io) {
   QCommandLineParser parser;
   const SceneInputOptions input;
-  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the network as JSON to <file>."), QStringLiteral("file"));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
+  const QCommandLineOption json(QStringLiteral("json"),
+                                Cli::tr("Write the network as JSON to <file>."),
+                                QStringLiteral("file"));
+  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
+                                Cli::tr("Show this help."));
   input.addTo(parser);
   parser.addOptions({json, help});
   const QString prefix = QStringLiteral("microsim-cli export: ");
@@ -83,17 +89,20 @@ int runExport(const QStringList& args, Streams& io) {
     return kExitUsage;
   }
   if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli export --scene FILE | --lattice N [--json FILE]") << "\n\n"
+    io.out << Cli::tr("Usage: microsim-cli export --scene FILE | --lattice N [--json FILE]")
+           << "\n\n"
            << parser.helpText().section(QLatin1Char('\n'), 2);
     return kExitOk;
   }
   if (!parser.positionalArguments().isEmpty()) {
-    io.err << prefix << Cli::tr("unexpected argument '%1'").arg(parser.positionalArguments().front()) << '\n';
+    io.err << prefix
+           << Cli::tr("unexpected argument '%1'").arg(parser.positionalArguments().front()) << '\n';
     return kExitUsage;
   }
 
   int code = kExitOk;
-  const std::optional<sim::SpringScene> scene = readSceneInput(parser, input, QStringLiteral("export"), io, code);
+  const std::optional<sim::SpringScene> scene =
+      readSceneInput(parser, input, QStringLiteral("export"), io, code);
   if (!scene) return code;
 
   const sim::SpringModel& m = scene->model;
@@ -112,7 +121,8 @@ int runExport(const QStringList& args, Streams& io) {
     QFile file(parser.value(json));
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
         file.write(QByteArray::fromStdString(networkJson(*scene).dump() + "\n")) < 0) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString()) << '\n';
+      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString())
+             << '\n';
       return kExitFailure;
     }
   }

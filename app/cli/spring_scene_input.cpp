@@ -12,19 +12,32 @@ namespace {
 QString kindText(sim::SceneErrorKind kind) {
   using K = sim::SceneErrorKind;
   switch (kind) {
-    case K::FileNotFound: return Cli::tr("cannot open the scene file");
-    case K::MalformedJson: return Cli::tr("not valid JSON");
-    case K::WrongType: return Cli::tr("wrong type or length");
-    case K::MissingField: return Cli::tr("required field missing");
-    case K::UnknownField: return Cli::tr("unknown field");
-    case K::UnknownObjectType: return Cli::tr("unknown object type");
-    case K::IndexOutOfRange: return Cli::tr("node index out of range");
-    case K::SelfLink: return Cli::tr("link joins a node to itself");
-    case K::NegativeValue: return Cli::tr("value must not be negative");
-    case K::NonFinite: return Cli::tr("number is not finite");
-    case K::DuplicateControl: return Cli::tr("node is controlled twice");
-    case K::InvalidValue: return Cli::tr("value out of range");
-    case K::MeshImport: return Cli::tr("cannot import the surface mesh");
+    case K::FileNotFound:
+      return Cli::tr("cannot open the scene file");
+    case K::MalformedJson:
+      return Cli::tr("not valid JSON");
+    case K::WrongType:
+      return Cli::tr("wrong type or length");
+    case K::MissingField:
+      return Cli::tr("required field missing");
+    case K::UnknownField:
+      return Cli::tr("unknown field");
+    case K::UnknownObjectType:
+      return Cli::tr("unknown object type");
+    case K::IndexOutOfRange:
+      return Cli::tr("node index out of range");
+    case K::SelfLink:
+      return Cli::tr("link joins a node to itself");
+    case K::NegativeValue:
+      return Cli::tr("value must not be negative");
+    case K::NonFinite:
+      return Cli::tr("number is not finite");
+    case K::DuplicateControl:
+      return Cli::tr("node is controlled twice");
+    case K::InvalidValue:
+      return Cli::tr("value out of range");
+    case K::MeshImport:
+      return Cli::tr("cannot import the surface mesh");
   }
   return {};
 }
@@ -33,11 +46,21 @@ QString meshText(const sim::MeshImportError& e) {
   using K = sim::MeshImportErrorKind;
   QString text;
   switch (e.kind) {
-    case K::FileNotFound: text = Cli::tr("file not found"); break;
-    case K::Unreadable: text = Cli::tr("unreadable"); break;
-    case K::NoTriangles: text = Cli::tr("no triangles"); break;
-    case K::NonFiniteCoords: text = Cli::tr("non-finite coordinates"); break;
-    case K::BadOptions: text = Cli::tr("bad import options"); break;
+    case K::FileNotFound:
+      text = Cli::tr("file not found");
+      break;
+    case K::Unreadable:
+      text = Cli::tr("unreadable");
+      break;
+    case K::NoTriangles:
+      text = Cli::tr("no triangles");
+      break;
+    case K::NonFiniteCoords:
+      text = Cli::tr("non-finite coordinates");
+      break;
+    case K::BadOptions:
+      text = Cli::tr("bad import options");
+      break;
   }
   if (!e.detail.empty()) text += QStringLiteral(": ") + QString::fromStdString(e.detail).trimmed();
   return text;
@@ -87,14 +110,20 @@ std::optional<sim::SpringScene> readSceneInput(const QCommandLineParser& parser,
   bool ok = false;
   const int n = parser.value(options.lattice).toInt(&ok);
   if (!ok || n < 2 || n > 200) {
-    io.err << prefix << Cli::tr("--lattice wants a whole number from 2 to 200, not '%1'").arg(parser.value(options.lattice)) << '\n';
+    io.err << prefix
+           << Cli::tr("--lattice wants a whole number from 2 to 200, not '%1'")
+                  .arg(parser.value(options.lattice))
+           << '\n';
     return std::nullopt;
   }
   double k = 10.0;
   if (parser.isSet(options.stiffness)) {
     k = parser.value(options.stiffness).toDouble(&ok);
     if (!ok || !(k >= 0.0) || !std::isfinite(k)) {
-      io.err << prefix << Cli::tr("--stiffness wants a number ≥ 0, not '%1'").arg(parser.value(options.stiffness)) << '\n';
+      io.err << prefix
+             << Cli::tr("--stiffness wants a number ≥ 0, not '%1'")
+                    .arg(parser.value(options.stiffness))
+             << '\n';
       return std::nullopt;
     }
   }

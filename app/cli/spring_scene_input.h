@@ -14,11 +14,13 @@
 namespace microsim::cli {
 
 struct SceneInputOptions {
-  QCommandLineOption scene{QStringLiteral("scene"), Cli::tr("Read the spring network from the scene <file>."),
+  QCommandLineOption scene{QStringLiteral("scene"),
+                           Cli::tr("Read the spring network from the scene <file>."),
                            QStringLiteral("file")};
-  QCommandLineOption lattice{QStringLiteral("lattice"),
-                             Cli::tr("Use the paper's N×N×N lattice box (bottom fixed, top middle node pulled up 1 mm)."),
-                             QStringLiteral("N")};
+  QCommandLineOption lattice{
+      QStringLiteral("lattice"),
+      Cli::tr("Use the paper's N×N×N lattice box (bottom fixed, top middle node pulled up 1 mm)."),
+      QStringLiteral("N")};
   QCommandLineOption stiffness{QStringLiteral("stiffness"),
                                Cli::tr("Link stiffness of the --lattice box in g/s² (default 10)."),
                                QStringLiteral("k")};

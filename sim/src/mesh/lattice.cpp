@@ -42,8 +42,7 @@ SpringModel latticeBox(const LatticeDef& def) {
   // nodes in index order x fastest, z slowest
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        m.addNode(Vec3(x, y, z) * def.spacing, def.mass);
+      for (int x = 0; x < n; ++x) m.addNode(Vec3(x, y, z) * def.spacing, def.mass);
 
   // per node: axis links forward, then both diagonals of the face squares whose
   // lowest corner it is

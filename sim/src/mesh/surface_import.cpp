@@ -1,8 +1,8 @@
 #include "microsim/sim/mesh/surface_import.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -60,8 +60,7 @@ SurfaceImport springMeshFromTriangles(const Points& vertices,
   std::vector<std::array<int, 3>> kept;
   kept.reserve(triangles.size());
   for (const auto& t : triangles) {
-    if (std::any_of(t.begin(), t.end(), [&](int v) { return v < 0 || v >= vertexCount; }))
-      continue;
+    if (std::any_of(t.begin(), t.end(), [&](int v) { return v < 0 || v >= vertexCount; })) continue;
     const std::array<int, 3> w{node[t[0]], node[t[1]], node[t[2]]};
     if (w[0] == w[1] || w[1] == w[2] || w[0] == w[2]) continue;
     kept.push_back(w);
@@ -105,7 +104,7 @@ SurfaceImport importSurfaceMesh(const std::string& path, const SurfaceMeshOption
     Assimp::Importer importer;
     const aiScene* scene =
         importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate |
-                                      aiProcess_PreTransformVertices);
+                                    aiProcess_PreTransformVertices);
     if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0)
       return MeshImportError{MeshImportErrorKind::Unreadable, importer.GetErrorString()};
 

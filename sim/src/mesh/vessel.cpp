@@ -10,7 +10,9 @@ namespace microsim::sim {
 
 namespace {
 
-bool finite(const Vec3& v) { return v.allFinite(); }
+bool finite(const Vec3& v) {
+  return v.allFinite();
+}
 
 }  // namespace
 

@@ -136,8 +136,7 @@ class Reader {
     const auto it = obj.find(std::string(name));
     return it == obj.end() ? nullptr : &*it;
   }
-  bool required(const json& obj, const std::string& path, std::string_view name,
-                const json*& out) {
+  bool required(const json& obj, const std::string& path, std::string_view name, const json*& out) {
     out = field(obj, name);
     return out != nullptr || fail(SceneErrorKind::MissingField, key(path, name));
   }
@@ -245,9 +244,10 @@ bool Reader::vessel(const json& o, const std::string& path, SpringModel& m) {
     else if (preset != "paper")
       return fail(SceneErrorKind::InvalidValue, key(path, "preset"));
   }
-  const std::pair<std::string_view, double*> positives[] = {
-      {"radius", &def.radius}, {"wall_thickness", &def.wallThickness},
-      {"length", &def.length}, {"mass", &def.mass}};
+  const std::pair<std::string_view, double*> positives[] = {{"radius", &def.radius},
+                                                            {"wall_thickness", &def.wallThickness},
+                                                            {"length", &def.length},
+                                                            {"mass", &def.mass}};
   for (const auto& [name, target] : positives)
     if (const json* v = field(o, name); v && !positive(*v, key(path, name), *target)) return false;
   const std::pair<std::string_view, double*> nonNegatives[] = {
@@ -269,7 +269,8 @@ bool Reader::vessel(const json& o, const std::string& path, SpringModel& m) {
     return false;
   if (def.wallThickness >= def.radius)
     return fail(SceneErrorKind::InvalidValue, key(path, "wall_thickness"));
-  if (!(def.direction.norm() > 0.0)) return fail(SceneErrorKind::InvalidValue, key(path, "direction"));
+  if (!(def.direction.norm() > 0.0))
+    return fail(SceneErrorKind::InvalidValue, key(path, "direction"));
   if (!sizeLimit(2LL * def.rings * def.nodesPerRing, path)) return false;
   m = sim::vessel(def).model;
   return true;
@@ -388,7 +389,8 @@ bool Reader::fixedAndControls(const json& o, const std::string& path, SpringMode
         return false;
       int local = 0;
       Vec3 d;
-      if (!nodeIndex(*node, key(p, "node"), n, local) || !vec3(*displacement, key(p, "displacement"), d))
+      if (!nodeIndex(*node, key(p, "node"), n, local) ||
+          !vec3(*displacement, key(p, "displacement"), d))
         return false;
       if (!seen.insert(local).second) return fail(SceneErrorKind::DuplicateControl, key(p, "node"));
       if (part.isFixed(local)) return fail(SceneErrorKind::InvalidValue, key(p, "node"));

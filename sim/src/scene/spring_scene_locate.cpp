@@ -47,9 +47,15 @@ class Scanner {
     }
     const std::size_t begin = pos_;
     switch (peek()) {
-      case '{': object(); break;
-      case '[': array(); break;
-      case '"': string(); break;
+      case '{':
+        object();
+        break;
+      case '[':
+        array();
+        break;
+      case '"':
+        string();
+        break;
       default:
         while (pos_ < text_.size() && text_[pos_] != ',' && text_[pos_] != ']' &&
                text_[pos_] != '}' && text_[pos_] != ' ' && text_[pos_] != '\n' &&

@@ -15,7 +15,8 @@ using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
 QJsonObject exportScene(const QStringList& input, const QString& out) {
-  const CliRun r = runCli(QStringList{QStringLiteral("export")} + input + QStringList{QStringLiteral("--json"), out});
+  const CliRun r = runCli(QStringList{QStringLiteral("export")} + input +
+                          QStringList{QStringLiteral("--json"), out});
   EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
   QFile f(out);
   EXPECT_TRUE(f.open(QIODevice::ReadOnly));
@@ -27,8 +28,8 @@ QByteArray asScene(const QJsonObject& net) {
   QJsonArray links;
   for (const QJsonValue& v : net.value(QStringLiteral("links")).toArray()) {
     const QJsonObject l = v.toObject();
-    links.append(QJsonArray{l.value(QStringLiteral("a")), l.value(QStringLiteral("b")), l.value(QStringLiteral("k")),
-                            l.value(QStringLiteral("rest"))});
+    links.append(QJsonArray{l.value(QStringLiteral("a")), l.value(QStringLiteral("b")),
+                            l.value(QStringLiteral("k")), l.value(QStringLiteral("rest"))});
   }
   const QJsonArray nodes = net.value(QStringLiteral("nodes")).toArray();
   QJsonArray controls;
@@ -52,7 +53,8 @@ QByteArray asScene(const QJsonObject& net) {
 
 TEST(ExportCommand, LatticeRoundTripsThroughASceneFile) {
   QTemporaryDir dir;
-  const QJsonObject first = exportScene({QStringLiteral("--lattice"), QStringLiteral("6")}, dir.filePath(QStringLiteral("a.json")));
+  const QJsonObject first = exportScene({QStringLiteral("--lattice"), QStringLiteral("6")},
+                                        dir.filePath(QStringLiteral("a.json")));
   const QJsonArray links = first.value(QStringLiteral("links")).toArray();
   EXPECT_EQ(links.size(), 1440);
   EXPECT_EQ(first.value(QStringLiteral("nodes")).toArray().size(), 216);
@@ -72,21 +74,25 @@ TEST(ExportCommand, LatticeRoundTripsThroughASceneFile) {
   ASSERT_TRUE(f.open(QIODevice::WriteOnly));
   f.write(asScene(first));
   f.close();
-  const QJsonObject second = exportScene({QStringLiteral("--scene"), scenePath}, dir.filePath(QStringLiteral("b.json")));
+  const QJsonObject second =
+      exportScene({QStringLiteral("--scene"), scenePath}, dir.filePath(QStringLiteral("b.json")));
   for (const char* key : {"nodes", "links", "fixed", "controls"})
     EXPECT_EQ(second.value(QLatin1String(key)), first.value(QLatin1String(key))) << key;
 }
 
 TEST(ExportCommand, MixedSceneObjectsAndCounts) {
   QTemporaryDir dir;
-  const QJsonObject net = exportScene({QStringLiteral("--scene"), QStringLiteral(MICROSIM_TEST_DATA_DIR "/scenes/mixed.json")},
-                                      dir.filePath(QStringLiteral("m.json")));
+  const QJsonObject net = exportScene(
+      {QStringLiteral("--scene"), QStringLiteral(MICROSIM_TEST_DATA_DIR "/scenes/mixed.json")},
+      dir.filePath(QStringLiteral("m.json")));
   const QJsonArray objects = net.value(QStringLiteral("objects")).toArray();
   ASSERT_EQ(objects.size(), 6);
   int links = 0;
-  for (const QJsonValue& o : objects) links += o.toObject().value(QStringLiteral("link_count")).toInt();
+  for (const QJsonValue& o : objects)
+    links += o.toObject().value(QStringLiteral("link_count")).toInt();
   EXPECT_EQ(net.value(QStringLiteral("links")).toArray().size(), links);
-  EXPECT_EQ(objects.at(4).toObject().value(QStringLiteral("type")).toString(), QStringLiteral("surface-mesh"));
+  EXPECT_EQ(objects.at(4).toObject().value(QStringLiteral("type")).toString(),
+            QStringLiteral("surface-mesh"));
   EXPECT_EQ(net.value(QStringLiteral("gravity")).toArray().at(2).toDouble(), -9810.0);
   EXPECT_FALSE(net.value(QStringLiteral("triangles")).toArray().isEmpty());
 
@@ -103,7 +109,9 @@ TEST(ExportCommand, Errors) {
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_TRUE(bad.err.contains(QStringLiteral("objects[0].links[1][1]"))) << bad.err.toStdString();
   EXPECT_EQ(runCli({QStringLiteral("export")}).exitCode, 2);
-  EXPECT_EQ(runCli({QStringLiteral("export"), QStringLiteral("--lattice"), QStringLiteral("1")}).exitCode, 2);
+  EXPECT_EQ(
+      runCli({QStringLiteral("export"), QStringLiteral("--lattice"), QStringLiteral("1")}).exitCode,
+      2);
 }
 
 }  // namespace

@@ -42,14 +42,16 @@ TEST(SolveCommand, HangingSpringReachesTheClosedFormStretch) {
                  "links": [[0, 1, 50.0]], "fixed": [0]}]})");
   for (const char* solver : {"newton", "reference", "qss"}) {
     const QString out = dir.filePath(QStringLiteral("out_%1.json").arg(QLatin1String(solver)));
-    const CliRun r = runCli({QStringLiteral("solve"), QStringLiteral("--scene"), scene, QStringLiteral("--solver"),
-                             QLatin1String(solver), QStringLiteral("--iterations"), QStringLiteral("5000"),
-                             QStringLiteral("--tolerance"), QStringLiteral("1e-12"), QStringLiteral("--json"), out});
+    const CliRun r = runCli(
+        {QStringLiteral("solve"), QStringLiteral("--scene"), scene, QStringLiteral("--solver"),
+         QLatin1String(solver), QStringLiteral("--iterations"), QStringLiteral("5000"),
+         QStringLiteral("--tolerance"), QStringLiteral("1e-12"), QStringLiteral("--json"), out});
     ASSERT_EQ(r.exitCode, 0) << solver << " " << r.err.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("status"))) << r.out.toStdString();
     const QJsonObject doc = readJson(out);
     EXPECT_EQ(doc.value(QStringLiteral("solver")).toString(), QLatin1String(solver));
-    EXPECT_EQ(doc.value(QStringLiteral("status")).toString(), QStringLiteral("converged")) << solver;
+    EXPECT_EQ(doc.value(QStringLiteral("status")).toString(), QStringLiteral("converged"))
+        << solver;
     EXPECT_TRUE(doc.contains(QStringLiteral("iterations")));
     EXPECT_TRUE(doc.contains(QStringLiteral("seconds")));
     EXPECT_LE(doc.value(QStringLiteral("residual")).toDouble(), 1e-12);
@@ -69,8 +71,9 @@ TEST(SolveCommand, ChainBetweenFixedAndControlledNodes) {
                  "controls": [{"node": 2, "displacement": [1, 0, 0]}]}],
     "solver": {"name": "newton", "iterations": 100}})");
   const QString out = dir.filePath(QStringLiteral("out.json"));
-  const CliRun r = runCli({QStringLiteral("solve"), QStringLiteral("--scene"), scene, QStringLiteral("--tolerance"),
-                           QStringLiteral("1e-12"), QStringLiteral("--json"), out});
+  const CliRun r = runCli({QStringLiteral("solve"), QStringLiteral("--scene"), scene,
+                           QStringLiteral("--tolerance"), QStringLiteral("1e-12"),
+                           QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   const QJsonObject doc = readJson(out);
   EXPECT_EQ(doc.value(QStringLiteral("solver")).toString(), QStringLiteral("newton"));
@@ -81,10 +84,11 @@ TEST(SolveCommand, ChainBetweenFixedAndControlledNodes) {
 TEST(SolveCommand, LatticeProtocol) {
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("lattice.json"));
-  const CliRun r = runCli({QStringLiteral("solve"), QStringLiteral("--lattice"), QStringLiteral("4"),
-                           QStringLiteral("--solver"), QStringLiteral("qss"), QStringLiteral("--iterations"),
-                           QStringLiteral("10"), QStringLiteral("--cutout"), QStringLiteral("0.001"),
-                           QStringLiteral("--json"), out});
+  const CliRun r =
+      runCli({QStringLiteral("solve"), QStringLiteral("--lattice"), QStringLiteral("4"),
+              QStringLiteral("--solver"), QStringLiteral("qss"), QStringLiteral("--iterations"),
+              QStringLiteral("10"), QStringLiteral("--cutout"), QStringLiteral("0.001"),
+              QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   const QJsonObject doc = readJson(out);
   EXPECT_EQ(doc.value(QStringLiteral("positions")).toArray().size(), 64);
@@ -102,8 +106,9 @@ TEST(SolveCommand, MalformedSceneExitsOneAndNamesTheField) {
                                   "{\"objects\": [{\"type\": \"spring-mesh\",\n"
                                   "  \"nodes\": [[0, 0, 0], [1, 0, 0]],\n"
                                   "  \"links\": [[0, 1, 50.0], [0, 0, 50.0]]}]}");
-  const CliRun r = runCli({QStringLiteral("solve"), QStringLiteral("--scene"), scene, QStringLiteral("--solver"),
-                           QStringLiteral("qss"), QStringLiteral("--iterations"), QStringLiteral("5")});
+  const CliRun r =
+      runCli({QStringLiteral("solve"), QStringLiteral("--scene"), scene, QStringLiteral("--solver"),
+              QStringLiteral("qss"), QStringLiteral("--iterations"), QStringLiteral("5")});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("objects[0].links[1]"))) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("bad.json:3:"))) << r.err.toStdString();
@@ -114,7 +119,8 @@ TEST(SolveCommand, MalformedSceneExitsOneAndNamesTheField) {
   EXPECT_EQ(syntax.exitCode, 1);
   EXPECT_TRUE(syntax.err.contains(QStringLiteral("syntax.json:2:1"))) << syntax.err.toStdString();
 
-  const CliRun missing = runCli({QStringLiteral("solve"), QStringLiteral("--scene"), dir.filePath(QStringLiteral("none.json")),
+  const CliRun missing = runCli({QStringLiteral("solve"), QStringLiteral("--scene"),
+                                 dir.filePath(QStringLiteral("none.json")),
                                  QStringLiteral("--iterations"), QStringLiteral("5")});
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_TRUE(missing.err.contains(QStringLiteral("none.json"))) << missing.err.toStdString();
@@ -125,19 +131,32 @@ TEST(SolveCommand, BadArgumentsExitTwo) {
   const QString three = QStringLiteral("3");
   const QString it = QStringLiteral("--iterations");
   const QString five = QStringLiteral("5");
-  const CliRun unknown = runCli({QStringLiteral("solve"), L, three, QStringLiteral("--solver"), QStringLiteral("magic"), it, five});
+  const CliRun unknown = runCli({QStringLiteral("solve"), L, three, QStringLiteral("--solver"),
+                                 QStringLiteral("magic"), it, five});
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_TRUE(unknown.err.contains(QStringLiteral("unknown solver 'magic'"))) << unknown.err.toStdString();
+  EXPECT_TRUE(unknown.err.contains(QStringLiteral("unknown solver 'magic'")))
+      << unknown.err.toStdString();
   EXPECT_TRUE(unknown.err.contains(QStringLiteral("qss")));
 
   EXPECT_EQ(runCli({QStringLiteral("solve"), L, three}).exitCode, 2);  // no limit
-  EXPECT_EQ(runCli({QStringLiteral("solve"), it, five}).exitCode, 2);   // no network
-  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, QStringLiteral("--scene"), QStringLiteral("x.json"), it, five}).exitCode, 2);
+  EXPECT_EQ(runCli({QStringLiteral("solve"), it, five}).exitCode, 2);  // no network
+  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, QStringLiteral("--scene"),
+                    QStringLiteral("x.json"), it, five})
+                .exitCode,
+            2);
   EXPECT_EQ(runCli({QStringLiteral("solve"), L, QStringLiteral("one"), it, five}).exitCode, 2);
   EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, QStringLiteral("0")}).exitCode, 2);
-  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--alpha"), QStringLiteral("-1")}).exitCode, 2);
-  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--momentum"), QStringLiteral("1")}).exitCode, 2);
-  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--frobnicate")}).exitCode, 2);
+  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--alpha"),
+                    QStringLiteral("-1")})
+                .exitCode,
+            2);
+  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--momentum"),
+                    QStringLiteral("1")})
+                .exitCode,
+            2);
+  EXPECT_EQ(runCli({QStringLiteral("solve"), L, three, it, five, QStringLiteral("--frobnicate")})
+                .exitCode,
+            2);
   const CliRun help = runCli({QStringLiteral("solve"), QStringLiteral("--help")});
   EXPECT_EQ(help.exitCode, 0);
   EXPECT_TRUE(help.out.contains(QStringLiteral("--budget-ms")));

@@ -1,7 +1,7 @@
 #include "microsim/sim/mesh/grid.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <set>

@@ -1,7 +1,7 @@
 #include "microsim/sim/mesh/surface_import.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <filesystem>
 #include <fstream>
@@ -20,8 +20,7 @@ class SurfaceImportFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           (std::string("microsim_surface_import_") + info->name());
+    dir_ = fs::temp_directory_path() / (std::string("microsim_surface_import_") + info->name());
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -33,8 +32,12 @@ class SurfaceImportFiles : public ::testing::Test {
   fs::path dir_;
 };
 
-const SpringModel& model(const SurfaceImport& r) { return std::get<SpringModel>(r); }
-MeshImportErrorKind kind(const SurfaceImport& r) { return std::get<MeshImportError>(r).kind; }
+const SpringModel& model(const SurfaceImport& r) {
+  return std::get<SpringModel>(r);
+}
+MeshImportErrorKind kind(const SurfaceImport& r) {
+  return std::get<MeshImportError>(r).kind;
+}
 
 TEST(SurfaceImport, CubeObjWeldsToEightNodes) {
   const SurfaceImport r = importSurfaceMesh(kCube);
@@ -71,29 +74,32 @@ TEST(SurfaceImport, WithoutWeldingEveryFaceIsItsOwnPatch) {
 }
 
 TEST_F(SurfaceImportFiles, AsciiStlPlyAndGltf) {
-  const std::string stl = write("tri.stl",
-      "solid t\n"
-      " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"
-      "  endloop\n endfacet\n"
-      " facet normal 0 0 1\n  outer loop\n   vertex 1 0 0\n   vertex 1 1 0\n   vertex 0 1 0\n"
-      "  endloop\n endfacet\n"
-      "endsolid t\n");
+  const std::string stl =
+      write("tri.stl",
+            "solid t\n"
+            " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"
+            "  endloop\n endfacet\n"
+            " facet normal 0 0 1\n  outer loop\n   vertex 1 0 0\n   vertex 1 1 0\n   vertex 0 1 0\n"
+            "  endloop\n endfacet\n"
+            "endsolid t\n");
   const SurfaceImport s = importSurfaceMesh(stl);
   ASSERT_TRUE(std::holds_alternative<SpringModel>(s));
   EXPECT_EQ(model(s).nodeCount(), 4);
   EXPECT_EQ(model(s).linkCount(), 5);
 
-  const std::string ply = write("quad.ply",
-      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  const std::string ply =
+      write("quad.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
   const SurfaceImport p = importSurfaceMesh(ply);
   ASSERT_TRUE(std::holds_alternative<SpringModel>(p));
   EXPECT_EQ(model(p).triangles().size(), 2u);
   EXPECT_EQ(model(p).linkCount(), 5);
 
   // a tetrahedron placed by a node transform at x = 10
-  const std::string gltf = write("tet.gltf",
+  const std::string gltf = write(
+      "tet.gltf",
       R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
       R"("nodes":[{"mesh":0,"translation":[10,0,0]}],)"
       R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
@@ -116,10 +122,11 @@ TEST_F(SurfaceImportFiles, FailuresAreValues) {
   EXPECT_EQ(kind(importSurfaceMesh(dir_.string())), MeshImportErrorKind::FileNotFound);
 
   // a ply whose header promises more than the file holds
-  const SurfaceImport truncated = importSurfaceMesh(write("bad.ply",
-      "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\n"
-      "property float y\nproperty float z\nelement face 1000\n"
-      "property list uchar int vertex_indices\nend_header\n\x01\x02"));
+  const SurfaceImport truncated = importSurfaceMesh(
+      write("bad.ply",
+            "ply\nformat binary_little_endian 1.0\nelement vertex 1000\nproperty float x\n"
+            "property float y\nproperty float z\nelement face 1000\n"
+            "property list uchar int vertex_indices\nend_header\n\x01\x02"));
   ASSERT_TRUE(std::holds_alternative<MeshImportError>(truncated));
   EXPECT_TRUE(kind(truncated) == MeshImportErrorKind::Unreadable ||
               kind(truncated) == MeshImportErrorKind::NoTriangles);
@@ -144,9 +151,10 @@ TEST_F(SurfaceImportFiles, FailuresAreValues) {
       write("short.stl", std::string(84, '\0') + "\x05"),
       write("stl_count.stl", std::string(80, 'x') + std::string("\xff\xff\x00\x00", 4)),
       write("text.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\""),
-      write("nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                       "end_header\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"),
+      write("nan.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "end_header\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"),
   };
   for (const std::string& file : corrupt) {
     const SurfaceImport r = importSurfaceMesh(file);

@@ -1,7 +1,7 @@
 #include "microsim/sim/mesh/tetra_lattice.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <map>
@@ -12,7 +12,9 @@ namespace microsim::sim {
 namespace {
 
 using Edge = std::pair<int, int>;
-Edge edge(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+Edge edge(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
 
 TEST(TetraLattice, PaperSizedDefaultCounts) {
   const TetraLatticeDef d;

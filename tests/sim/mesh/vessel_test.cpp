@@ -1,7 +1,7 @@
 #include "microsim/sim/mesh/vessel.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -18,8 +18,8 @@ Vec3 triangleNormal(const SpringModel& m, const std::array<int, 3>& t) {
 }
 
 Vec3 triangleCentre(const SpringModel& m, const std::array<int, 3>& t) {
-  return (m.restPositions().col(t[0]) + m.restPositions().col(t[1]) +
-          m.restPositions().col(t[2])) / 3.0;
+  return (m.restPositions().col(t[0]) + m.restPositions().col(t[1]) + m.restPositions().col(t[2])) /
+         3.0;
 }
 
 TEST(Vessel, PaperDefaultHas98NodesAnd581Links) {

@@ -14,7 +14,9 @@ namespace {
 
 const std::string kScenes = std::string(MICROSIM_TEST_DATA_DIR) + "/scenes/";
 
-const SpringScene& sceneOf(const SceneLoad& r) { return std::get<SpringScene>(r); }
+const SpringScene& sceneOf(const SceneLoad& r) {
+  return std::get<SpringScene>(r);
+}
 
 SceneError errorOf(const std::string& text) {
   const SceneLoad r = parseSpringScene(text, "t.json");
@@ -55,8 +57,9 @@ TEST(SpringScene, EveryObjectTypeMergesInOrder) {
   const SpringScene& s = sceneOf(r);
   ASSERT_EQ(s.objects.size(), 6u);
   const int nodes[] = {27, 48, 12, 12, 8, 2};
-  const int links[] = {126, static_cast<int>(vesselLinkCount(4, 6)), 3 * 6 + 5,
-                       static_cast<int>(tetraLatticeLinkCount(3, 2, 2)), 18, 1};
+  const int links[] = {126,       static_cast<int>(vesselLinkCount(4, 6)),
+                       3 * 6 + 5, static_cast<int>(tetraLatticeLinkCount(3, 2, 2)),
+                       18,        1};
   int firstNode = 0;
   int firstLink = 0;
   for (int i = 0; i < 6; ++i) {
@@ -144,7 +147,8 @@ TEST(SpringScene, StructureErrors) {
   EXPECT_EQ(errorOf(R"({"objects": [{"size": [3,3,3]}]})").kind, SceneErrorKind::MissingField);
   EXPECT_EQ(errorOf(R"({"objects": [{"type": 4}]})").kind, SceneErrorKind::WrongType);
 
-  const SceneError unknown = errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stifness": 4}]})");
+  const SceneError unknown =
+      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stifness": 4}]})");
   EXPECT_EQ(unknown.kind, SceneErrorKind::UnknownField);
   EXPECT_EQ(unknown.field, "objects[0].stifness");
 }
@@ -161,7 +165,8 @@ TEST(SpringScene, MissingAndIllTypedFields) {
   EXPECT_EQ(errorOf(mesh("[[0, 1, \"stiff\"]]")).field, "objects[0].links[0][2]");
   EXPECT_EQ(errorOf(mesh("[[0.5, 1, 1]]")).kind, SceneErrorKind::WrongType);
   EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": 0)")).kind, SceneErrorKind::WrongType);
-  const SceneError node = errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0]], "links": []}]})");
+  const SceneError node =
+      errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0]], "links": []}]})");
   EXPECT_EQ(node.kind, SceneErrorKind::WrongType);
   EXPECT_EQ(node.field, "objects[0].nodes[0]");
   EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": 3}]})").field, "objects[0].size");
@@ -180,12 +185,17 @@ TEST(SpringScene, MissingAndIllTypedFields) {
             SceneErrorKind::InvalidValue);
   EXPECT_EQ(errorOf(R"({"objects": [{"type": "grid", "cells": [0, 3]}]})").field,
             "objects[0].cells[0]");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"iterations": 0}})").field,
-            "solver.iterations");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"momentum": 1}})").kind,
-            SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "gravity": [0, 0]})").field,
-            "gravity");
+  EXPECT_EQ(
+      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"iterations": 0}})")
+          .field,
+      "solver.iterations");
+  EXPECT_EQ(
+      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"momentum": 1}})")
+          .kind,
+      SceneErrorKind::InvalidValue);
+  EXPECT_EQ(
+      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "gravity": [0, 0]})").field,
+      "gravity");
 }
 
 TEST(SpringScene, LinkIndexErrors) {
@@ -196,7 +206,8 @@ TEST(SpringScene, LinkIndexErrors) {
   const SceneError self = errorOf(mesh("[[0, 1, 1], [2, 2, 1]]"));
   EXPECT_EQ(self.kind, SceneErrorKind::SelfLink);
   EXPECT_EQ(self.field, "objects[0].links[1]");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": [3])")).kind, SceneErrorKind::IndexOutOfRange);
+  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": [3])")).kind,
+            SceneErrorKind::IndexOutOfRange);
 }
 
 TEST(SpringScene, NegativeAndNonFiniteValues) {
@@ -220,23 +231,30 @@ TEST(SpringScene, NegativeAndNonFiniteValues) {
       errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0,-1e400]], "links": []}]})");
   EXPECT_EQ(pos.kind, SceneErrorKind::NonFinite);
   EXPECT_EQ(pos.field, "objects[0].nodes[0][2]");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]",
-                         R"(, "controls": [{"node": 1, "displacement": [0, 1e999, 0]}])")).kind,
-            SceneErrorKind::NonFinite);
+  EXPECT_EQ(
+      errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1, "displacement": [0, 1e999, 0]}])"))
+          .kind,
+      SceneErrorKind::NonFinite);
 }
 
 TEST(SpringScene, ControlErrors) {
-  const SceneError dup = errorOf(mesh("[[0, 1, 1]]",
+  const SceneError dup = errorOf(mesh(
+      "[[0, 1, 1]]",
       R"(, "controls": [{"node": 1, "displacement": [0,0,1]}, {"node": 1, "displacement": [0,0,2]}])"));
   EXPECT_EQ(dup.kind, SceneErrorKind::DuplicateControl);
   EXPECT_EQ(dup.field, "objects[0].controls[1].node");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 5, "displacement": [0,0,1]}])")).kind,
-            SceneErrorKind::IndexOutOfRange);
+  EXPECT_EQ(
+      errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 5, "displacement": [0,0,1]}])")).kind,
+      SceneErrorKind::IndexOutOfRange);
   EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1}])")).field,
             "objects[0].controls[0].displacement");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": [1], "controls": [{"node": 1, "displacement": [0,0,1]}])")).kind,
+  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]",
+                         R"(, "fixed": [1], "controls": [{"node": 1, "displacement": [0,0,1]}])"))
+                .kind,
             SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1, "displacement": [0,0,1], "force": 2}])")).field,
+  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]",
+                         R"(, "controls": [{"node": 1, "displacement": [0,0,1], "force": 2}])"))
+                .field,
             "objects[0].controls[0].force");
   // the same local index in two objects is two different nodes
   const SceneLoad two = parseSpringScene(

@@ -13,12 +13,12 @@
 namespace microsim::sim {
 
 struct GridDef {
-  int cellsX = 100;         ///< cells along x (≥ 1)
-  int cellsY = 100;         ///< cells along y (≥ 1)
-  double size = 1.0;        ///< edge length of one square cell (mm)
-  double k = 10.0;          ///< stiffness of every link (g/s²)
-  double mass = 1.0;        ///< mass of every node (g)
-  bool fixBorder = false;   ///< fix the nodes on the grid's outline
+  int cellsX = 100;        ///< cells along x (≥ 1)
+  int cellsY = 100;        ///< cells along y (≥ 1)
+  double size = 1.0;       ///< edge length of one square cell (mm)
+  double k = 10.0;         ///< stiffness of every link (g/s²)
+  double mass = 1.0;       ///< mass of every node (g)
+  bool fixBorder = false;  ///< fix the nodes on the grid's outline
 };
 
 /// The grid described by `def`, finalized.
@@ -29,6 +29,8 @@ SpringModel gridMesh(const GridDef& def);
 SpringModel gridMesh(int cellsX, int cellsY, double size);
 
 /// Index of node (i, j) of a grid with `cellsX` cells along x.
-constexpr int gridIndex(int cellsX, int i, int j) { return i + (cellsX + 1) * j; }
+constexpr int gridIndex(int cellsX, int i, int j) {
+  return i + (cellsX + 1) * j;
+}
 
 }  // namespace microsim::sim

@@ -18,11 +18,11 @@
 namespace microsim::sim {
 
 struct LatticeDef {
-  int n = 6;             ///< nodes per edge (≥ 2); the box is (n − 1) mm wide
-  double k = 10.0;       ///< stiffness of every link (g/s²)
-  double mass = 1.0;     ///< mass of every node (g)
-  double spacing = 1.0;  ///< distance between neighbouring nodes (mm)
-  bool fixBottom = true; ///< fix every node of the z = 0 face
+  int n = 6;              ///< nodes per edge (≥ 2); the box is (n − 1) mm wide
+  double k = 10.0;        ///< stiffness of every link (g/s²)
+  double mass = 1.0;      ///< mass of every node (g)
+  double spacing = 1.0;   ///< distance between neighbouring nodes (mm)
+  bool fixBottom = true;  ///< fix every node of the z = 0 face
 };
 
 /// The lattice box described by `def`, finalized.
@@ -31,10 +31,14 @@ SpringModel latticeBox(const LatticeDef& def);
 SpringModel latticeBox(int n, double k = 10.0);
 
 /// Index of node (x, y, z) in an n³ lattice.
-constexpr int latticeIndex(int n, int x, int y, int z) { return x + n * (y + n * z); }
+constexpr int latticeIndex(int n, int x, int y, int z) {
+  return x + n * (y + n * z);
+}
 /// The middle node of the top face (z = n − 1), x = y = n / 2 (rounded down): the node
 /// the paper displaces.
-constexpr int latticeTopMiddle(int n) { return latticeIndex(n, n / 2, n / 2, n - 1); }
+constexpr int latticeTopMiddle(int n) {
+  return latticeIndex(n, n / 2, n / 2, n - 1);
+}
 /// Number of links of an n³ box: 3n²(n − 1) + 6n(n − 1)².
 constexpr long long latticeLinkCount(long long n) {
   return 3 * n * n * (n - 1) + 6 * n * (n - 1) * (n - 1);

@@ -24,13 +24,13 @@
 namespace microsim::sim {
 
 struct TetraLatticeDef {
-  int nx = 146;            ///< nodes along x (≥ 2)
-  int ny = 70;             ///< nodes along y (≥ 2)
-  int nz = 4;              ///< nodes along z (≥ 2)
-  double spacing = 1.0;    ///< edge of one cube (mm)
-  double k = 10.0;         ///< stiffness of every link (g/s²)
-  double mass = 1.0;       ///< mass of every node (g)
-  bool fixBottom = true;   ///< fix every node of the z = 0 face
+  int nx = 146;           ///< nodes along x (≥ 2)
+  int ny = 70;            ///< nodes along y (≥ 2)
+  int nz = 4;             ///< nodes along z (≥ 2)
+  double spacing = 1.0;   ///< edge of one cube (mm)
+  double k = 10.0;        ///< stiffness of every link (g/s²)
+  double mass = 1.0;      ///< mass of every node (g)
+  bool fixBottom = true;  ///< fix every node of the z = 0 face
 };
 
 struct TetraMesh {
@@ -44,8 +44,8 @@ TetraMesh tetraLattice(const TetraLatticeDef& def = {});
 
 /// Links tetraLattice makes for an nx by ny by nz block.
 constexpr long long tetraLatticeLinkCount(long long nx, long long ny, long long nz) {
-  return (nx - 1) * ny * nz + nx * (ny - 1) * nz + nx * ny * (nz - 1) +
-         (nx - 1) * (ny - 1) * nz + (nx - 1) * ny * (nz - 1) + nx * (ny - 1) * (nz - 1);
+  return (nx - 1) * ny * nz + nx * (ny - 1) * nz + nx * ny * (nz - 1) + (nx - 1) * (ny - 1) * nz +
+         (nx - 1) * ny * (nz - 1) + nx * (ny - 1) * (nz - 1);
 }
 
 }  // namespace microsim::sim

@@ -35,17 +35,17 @@
 namespace microsim::sim {
 
 struct VesselDef {
-  double radius = 0.5;          ///< outer radius (mm): a ~1 mm vessel
-  double wallThickness = 0.1;   ///< outer minus inner radius (mm), 0 < t < radius
-  double length = 3.0;          ///< clamped end to cut end along the axis (mm)
-  int rings = 7;                ///< layers along the axis per hull (≥ 2)
-  int nodesPerRing = 7;         ///< nodes around each ring (≥ 3)
-  double kLayer = 50.0;         ///< stiffness of links within a layer (g/s²)
-  double kBetween = 100.0;      ///< stiffness of links between adjacent layers (g/s²)
-  double mass = 1.0;            ///< mass of every node (g)
-  double damping = 0.0;         ///< damping of every node (g/s)
-  bool clampFirstRing = true;   ///< fix both hulls of ring 0
-  Vec3 origin = Vec3::Zero();   ///< centre of the clamped end ring (mm)
+  double radius = 0.5;             ///< outer radius (mm): a ~1 mm vessel
+  double wallThickness = 0.1;      ///< outer minus inner radius (mm), 0 < t < radius
+  double length = 3.0;             ///< clamped end to cut end along the axis (mm)
+  int rings = 7;                   ///< layers along the axis per hull (≥ 2)
+  int nodesPerRing = 7;            ///< nodes around each ring (≥ 3)
+  double kLayer = 50.0;            ///< stiffness of links within a layer (g/s²)
+  double kBetween = 100.0;         ///< stiffness of links between adjacent layers (g/s²)
+  double mass = 1.0;               ///< mass of every node (g)
+  double damping = 0.0;            ///< damping of every node (g/s)
+  bool clampFirstRing = true;      ///< fix both hulls of ring 0
+  Vec3 origin = Vec3::Zero();      ///< centre of the clamped end ring (mm)
   Vec3 direction = Vec3::UnitX();  ///< axis from clamped to cut end (normalised on use)
 
   /// The paper's Fig. 2 vessel: 7 rings of 7 nodes per hull, 98 nodes, 581 links.
@@ -74,13 +74,13 @@ struct TriangleRange {
 struct VesselMesh {
   SpringModel model;
   VesselDef def;
-  std::vector<int> ring;          ///< per node: layer index, 0 at the clamped end
-  std::vector<int> sector;        ///< per node: index j around the ring, angle 2πj/P
-  std::vector<VesselHull> hull;   ///< per node: inner or outer cylinder
-  TriangleRange outerSurface;     ///< adventitia, normals away from the axis
-  TriangleRange innerSurface;     ///< lumen, normals towards the axis
-  TriangleRange clampedEnd;       ///< annulus at ring 0
-  TriangleRange cutEnd;           ///< annulus at ring R − 1
+  std::vector<int> ring;         ///< per node: layer index, 0 at the clamped end
+  std::vector<int> sector;       ///< per node: index j around the ring, angle 2πj/P
+  std::vector<VesselHull> hull;  ///< per node: inner or outer cylinder
+  TriangleRange outerSurface;    ///< adventitia, normals away from the axis
+  TriangleRange innerSurface;    ///< lumen, normals towards the axis
+  TriangleRange clampedEnd;      ///< annulus at ring 0
+  TriangleRange cutEnd;          ///< annulus at ring R − 1
 
   /// Index of the node on `hull`, layer `ring`, sector `sector` (taken modulo P).
   int node(VesselHull h, int ringIndex, int sectorIndex) const;

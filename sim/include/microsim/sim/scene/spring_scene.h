@@ -56,8 +56,8 @@ struct SceneSolverSettings {
 
 /// Where one declared object landed in the merged model.
 struct SceneObject {
-  std::string type;   ///< "spring-mesh", "lattice", ...
-  std::string name;   ///< as declared, or empty
+  std::string type;  ///< "spring-mesh", "lattice", ...
+  std::string name;  ///< as declared, or empty
   int firstNode = 0;
   int nodeCount = 0;
   int firstLink = 0;
@@ -67,8 +67,8 @@ struct SceneObject {
 };
 
 struct SpringScene {
-  SpringModel model;         ///< every object merged, finalized
-  SpringControls controls;   ///< targets = rest position + displacement, global indices
+  SpringModel model;        ///< every object merged, finalized
+  SpringControls controls;  ///< targets = rest position + displacement, global indices
   std::vector<SceneObject> objects;
   SceneSolverSettings solver;
 };
@@ -91,11 +91,11 @@ enum class SceneErrorKind : std::uint8_t {
 
 struct SceneError {
   SceneErrorKind kind = SceneErrorKind::MalformedJson;
-  std::string file;         ///< the scene file as given (or the label passed to parse)
-  int line = 0;             ///< 1-based; 0 when unknown
-  int column = 0;           ///< 1-based, in bytes
-  std::size_t offset = 0;   ///< byte offset of the offending value
-  std::string field;        ///< JSON path, e.g. "objects[0].links[3]"; empty for the root
+  std::string file;        ///< the scene file as given (or the label passed to parse)
+  int line = 0;            ///< 1-based; 0 when unknown
+  int column = 0;          ///< 1-based, in bytes
+  std::size_t offset = 0;  ///< byte offset of the offending value
+  std::string field;       ///< JSON path, e.g. "objects[0].links[3]"; empty for the root
   std::optional<MeshImportError> meshError;  ///< for MeshImport: the importer's error
 };
 
