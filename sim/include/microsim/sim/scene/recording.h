@@ -1,0 +1,92 @@
+#pragma once
+// Recordings of an attempt: every InputFrame, verbatim, so that a replay feeds the stepper
+// the same bits and reaches the same states and the same score.
+//
+// File format (version 1, little-endian throughout):
+//   magic     8 bytes  "MSIMREC" 0x1A
+//   version   u16      1
+//   hands     u16      kHandCount (2)
+//   metaLen   u32      length of the metadata that follows
+//   metadata  metaLen bytes, opaque to the format (the app stores JSON: scene, lesson, trainee)
+//   frames    each: tag 'F' (u8), time (f64), then per hand: instrument (u8), tracked (u8),
+//             position x y z (f64), orientation w x y z (f64), closure (f64)
+//   end       tag 'E' (u8), frame count (u64), CRC-32 (IEEE) of every byte before the CRC (u32)
+//
+// The writer appends frames as they happen and flushes at least once a second of attempt
+// time, so a crash loses at most the last second. A file without its end record is an
+// unfinished attempt: the reader says Truncated and still returns every complete frame.
+
+#include "microsim/sim/scene/input_frame.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace microsim::sim {
+
+inline constexpr std::uint16_t kRecordingVersion = 1;
+
+struct Recording {
+  std::string metadata;
+  std::vector<InputFrame> frames;
+};
+
+enum class RecordingError : std::uint8_t {
+  None,
+  CannotOpen,          ///< the file could not be opened (missing, permissions)
+  CannotWrite,         ///< a write or flush failed (disk full)
+  NotARecording,       ///< wrong magic: some other file
+  UnsupportedVersion,  ///< a newer format than this build reads
+  Truncated,           ///< no end record: an unfinished attempt; complete frames are returned
+  ChecksumMismatch,    ///< the end record's CRC does not match the bytes: damaged
+  Malformed,           ///< an unknown tag, a count that disagrees, or a frame that fails validateFrame
+};
+
+struct RecordingStatus {
+  RecordingError error = RecordingError::None;
+  std::uint64_t offset = 0;  ///< byte offset where reading stopped (for the message)
+  bool ok() const { return error == RecordingError::None; }
+};
+
+/// Encodes a complete recording (with its end record) in memory.
+std::vector<std::uint8_t> encodeRecording(const Recording& recording);
+
+/// Decodes bytes; on Truncated `out` holds the complete frames before the cut.
+RecordingStatus decodeRecording(std::span<const std::uint8_t> bytes, Recording& out);
+
+/// Reads a file; on Truncated `out` holds the complete frames before the cut.
+RecordingStatus readRecording(const std::string& path, Recording& out);
+
+/// Streams frames to a file as an attempt runs.
+class RecordingWriter {
+ public:
+  RecordingWriter() = default;
+  ~RecordingWriter();  ///< closes without an end record when finish() was not called
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
+
+  RecordingStatus open(const std::string& path, const std::string& metadata);
+  /// Appends one frame; flushes when a second of attempt time has passed since the last flush.
+  RecordingStatus append(const InputFrame& frame);
+  /// Writes the end record and closes the file.
+  RecordingStatus finish();
+  bool isOpen() const { return file_ != nullptr; }
+  std::uint64_t frameCount() const { return frames_; }
+
+ private:
+  RecordingStatus write(std::span<const std::uint8_t> bytes);
+  void closeFile();
+
+  std::FILE* file_ = nullptr;
+  std::uint32_t crc_ = 0;
+  std::uint64_t frames_ = 0;
+  std::uint64_t bytes_ = 0;
+  double lastFlushTime_ = 0.0;
+};
+
+/// CRC-32 (IEEE 802.3, reflected, as zlib) continued from `crc` over `bytes`.
+std::uint32_t crc32(std::span<const std::uint8_t> bytes, std::uint32_t crc = 0);
+
+}  // namespace microsim::sim

@@ -1,0 +1,177 @@
+#include "microsim/sim/scene/recording.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+
+namespace microsim::sim {
+namespace {
+
+InputFrame frameAt(int i) {
+  InputFrame f;
+  f.time = 0.01 * i;
+  for (int h = 0; h < kHandCount; ++h) {
+    HandInput& hand = f.hands[h];
+    hand.instrument = h == 0 ? Instrument::Forceps : Instrument::NeedleHolder;
+    hand.tracked = i % 7 != 3;
+    hand.position = Eigen::Vector3d(std::sin(0.1 * i) + h, 0.3 * h, -0.01 * i);
+    hand.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.05 * i, Eigen::Vector3d::UnitZ()));
+    hand.closure = 0.5 + 0.5 * std::sin(0.2 * i + h);
+  }
+  return f;
+}
+
+Recording sample(int frames) {
+  Recording r;
+  r.metadata = R"({"scene":"two-ends","lesson":3})";
+  for (int i = 0; i < frames; ++i) r.frames.push_back(frameAt(i));
+  return r;
+}
+
+std::string tempPath(const char* name) {
+  return (std::filesystem::temp_directory_path() / (std::string("microsim-") + name + "-" +
+                                                    std::to_string(::getpid()))).string();
+}
+
+TEST(Recording, RoundTripIsBitExact) {
+  const Recording r = sample(250);
+  const std::vector<std::uint8_t> bytes = encodeRecording(r);
+  Recording back;
+  const RecordingStatus s = decodeRecording(bytes, back);
+  ASSERT_TRUE(s.ok()) << static_cast<int>(s.error);
+  EXPECT_EQ(back.metadata, r.metadata);
+  ASSERT_EQ(back.frames.size(), r.frames.size());
+  for (std::size_t i = 0; i < r.frames.size(); ++i) EXPECT_EQ(back.frames[i], r.frames[i]) << i;
+  EXPECT_EQ(encodeRecording(back), bytes);
+}
+
+TEST(Recording, WriterStreamsTheSameBytesAsTheEncoder) {
+  const Recording r = sample(300);
+  const std::string path = tempPath("writer");
+  RecordingWriter w;
+  ASSERT_TRUE(w.open(path, r.metadata).ok());
+  for (const InputFrame& f : r.frames) ASSERT_TRUE(w.append(f).ok());
+  EXPECT_EQ(w.frameCount(), 300u);
+  ASSERT_TRUE(w.finish().ok());
+
+  Recording back;
+  ASSERT_TRUE(readRecording(path, back).ok());
+  EXPECT_EQ(back.frames, r.frames);
+  std::remove(path.c_str());
+}
+
+TEST(Recording, AnUnfinishedAttemptKeepsItsCompleteFrames) {
+  const Recording r = sample(500);
+  const std::string path = tempPath("unfinished");
+  {
+    RecordingWriter w;
+    ASSERT_TRUE(w.open(path, r.metadata).ok());
+    for (const InputFrame& f : r.frames) ASSERT_TRUE(w.append(f).ok());
+    // destroyed without finish(): the app crashed mid-attempt
+  }
+  Recording back;
+  const RecordingStatus s = readRecording(path, back);
+  EXPECT_EQ(s.error, RecordingError::Truncated);
+  EXPECT_EQ(back.frames, r.frames);
+  std::remove(path.c_str());
+
+  // cut in the middle of a frame: everything before the cut survives
+  std::vector<std::uint8_t> bytes = encodeRecording(r);
+  bytes.resize(bytes.size() / 2);
+  EXPECT_EQ(decodeRecording(bytes, back).error, RecordingError::Truncated);
+  EXPECT_GT(back.frames.size(), 200u);
+  for (std::size_t i = 0; i < back.frames.size(); ++i) EXPECT_EQ(back.frames[i], r.frames[i]);
+}
+
+TEST(Recording, DamageIsDetected) {
+  const std::vector<std::uint8_t> good = encodeRecording(sample(50));
+  std::vector<std::uint8_t> bad = good;
+  bad[bad.size() / 2] ^= 0x01;  // one bit inside a frame's value
+  Recording back;
+  EXPECT_EQ(decodeRecording(bad, back).error, RecordingError::ChecksumMismatch);
+
+  std::vector<std::uint8_t> foreign(good.begin(), good.end());
+  foreign[0] = 'X';
+  EXPECT_EQ(decodeRecording(foreign, back).error, RecordingError::NotARecording);
+
+  std::vector<std::uint8_t> newer = good;
+  newer[8] = kRecordingVersion + 1;
+  EXPECT_EQ(decodeRecording(newer, back).error, RecordingError::UnsupportedVersion);
+
+  EXPECT_EQ(readRecording("/nonexistent/dir/x.msrec", back).error, RecordingError::CannotOpen);
+}
+
+TEST(Recording, GarbageNeverCrashesAndIsAlwaysRejected) {
+  const std::vector<std::uint8_t> good = encodeRecording(sample(20));
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<std::uint8_t> bytes = good;
+    // flip a few bytes and sometimes cut the tail
+    const int flips = 1 + static_cast<int>(rng() % 4);
+    for (int k = 0; k < flips; ++k) bytes[rng() % bytes.size()] = static_cast<std::uint8_t>(rng());
+    if (rng() % 3 == 0) bytes.resize(rng() % bytes.size());
+    if (bytes == good) continue;
+    Recording back;
+    const RecordingStatus s = decodeRecording(bytes, back);
+    EXPECT_FALSE(s.ok()) << "trial " << trial;
+    EXPECT_LE(s.offset, bytes.size());
+    for (const InputFrame& f : back.frames) {
+      InputRejection why;
+      EXPECT_TRUE(validateFrame(f, why));
+    }
+  }
+}
+
+TEST(Recording, WriterRefusesInvalidFramesAndReportsAFullDisk) {
+  const std::string path = tempPath("invalid");
+  RecordingWriter w;
+  ASSERT_TRUE(w.open(path, "").ok());
+  InputFrame f = frameAt(1);
+  f.hands[0].position.x() = std::nan("");
+  EXPECT_EQ(w.append(f).error, RecordingError::Malformed);
+  EXPECT_EQ(w.frameCount(), 0u);
+  ASSERT_TRUE(w.finish().ok());
+  std::remove(path.c_str());
+
+  if (std::filesystem::exists("/dev/full")) {
+    RecordingWriter full;
+    const RecordingStatus opened = full.open("/dev/full", "metadata");
+    EXPECT_EQ(opened.error, RecordingError::CannotWrite);
+  }
+}
+
+TEST(InputFrame, ValidationNamesTheReason) {
+  InputRejection why{};
+  InputFrame f = frameAt(2);
+  EXPECT_TRUE(validateFrame(f, why));
+
+  f.hands[1].closure = 1.5;
+  EXPECT_FALSE(validateFrame(f, why));
+  EXPECT_EQ(why, InputRejection::ClosureOutOfRange);
+
+  f = frameAt(2);
+  f.hands[0].orientation = Eigen::Quaterniond(2, 0, 0, 0);
+  EXPECT_FALSE(validateFrame(f, why));
+  EXPECT_EQ(why, InputRejection::NotUnitRotation);
+
+  f = frameAt(2);
+  f.time = INFINITY;
+  EXPECT_FALSE(validateFrame(f, why));
+  EXPECT_EQ(why, InputRejection::NonFinite);
+
+  f = frameAt(2);
+  EXPECT_FALSE(validateSequence(f, 5.0, why));
+  EXPECT_EQ(why, InputRejection::TimeBackwards);
+  EXPECT_TRUE(validateSequence(f, f.time, why));
+}
+
+TEST(Crc32, MatchesTheStandardCheckValue) {
+  const std::string check = "123456789";
+  EXPECT_EQ(crc32({reinterpret_cast<const std::uint8_t*>(check.data()), check.size()}), 0xCBF43926u);
+}
+
+}  // namespace
+}  // namespace microsim::sim
