@@ -13,7 +13,12 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
   setMesh(makeVesselPlaceholder());
 }
 
-Viewport::~Viewport() { releaseGL(); }
+Viewport::~Viewport() {
+  // the base class destroys the context after this destructor has run; unhook first so its
+  // aboutToBeDestroyed signal does not call back into a half-destroyed Viewport
+  if (QOpenGLContext* c = context()) disconnect(c, nullptr, this, nullptr);
+  releaseGL();
+}
 
 void Viewport::setMesh(ShadedMesh mesh) {
   mesh_ = std::move(mesh);
