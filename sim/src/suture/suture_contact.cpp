@@ -184,6 +184,7 @@ int SelfContact::project(Points& x, const Points& xStart, double radius, double 
     // closest points now; the separating direction from the substep's start
     const collide::SegmentClosest now =
         collide::closestSegmentSegment(x.col(i), x.col(i + 1), x.col(j), x.col(j + 1));
+    if (now.distance >= gap) continue;
     const Vec3 p0 = (1.0 - now.s) * xStart.col(i) + now.s * xStart.col(i + 1);
     const Vec3 q0 = (1.0 - now.t) * xStart.col(j) + now.t * xStart.col(j + 1);
     Vec3 normal = q0 - p0;
@@ -200,7 +201,7 @@ int SelfContact::project(Points& x, const Points& xStart, double radius, double 
     for (int k = 0; k < 4; ++k)
       if (movable[static_cast<std::size_t>(node[k])]) denom += share[k] * share[k];
     if (denom <= 0.0) continue;
-    const double lambda = (gap - along) / denom;
+    const double lambda = std::min(gap - along, 2.0 * gap) / denom;
     for (int k = 0; k < 4; ++k)
       if (movable[static_cast<std::size_t>(node[k])]) x.col(node[k]) += share[k] * lambda * normal;
 

@@ -178,15 +178,17 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       exemptions.push_back({std::max(0, p.node - 3), p.node + 3, p.face});
 
     for (int it = 0; it < params.iterations; ++it) {
-      // contacts: the nodes they correct become soft leaders of this round
+      // contacts: the nodes they correct become soft leaders of this round; friction acts on
+      // the substep's predicted motion only (later rounds would undo the length corrections)
+      const double muNow = it == 0 ? mu : 0.0;
       std::fill(contact.begin(), contact.end(), std::uint8_t{0});
       for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
       report.contactNodes =
-          projectCapsuleContacts(state.x, xStart_, world.capsules, radius, mu, movable, contact);
+          projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow, movable, contact);
       if (world.surface)
-        report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, mu,
+        report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, muNow,
                                                       movableSurface, exemptions, contact);
-      report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, mu, selfSkip,
+      report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, muNow, selfSkip,
                                                             movable, state.alive)
                                             : 0;
 
@@ -194,6 +196,14 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       restoreLengths(model, state.x, state.alive, leaders_, contact, params);
       if (model.needleLinks() > 0 && !needleHeld) rigidifyNeedle(model, state.x, swage);
     }
+
+    // a last contact pass without friction (it would undo the length corrections): the substep
+    // ends outside every obstacle, where the next one starts
+    std::fill(contact.begin(), contact.end(), std::uint8_t{0});
+    projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable, contact);
+    if (world.surface)
+      projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0, movableSurface,
+                             exemptions, contact);
 
     // slide through pierces, then break between grips
     state.time += h;

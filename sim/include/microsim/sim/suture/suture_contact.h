@@ -16,8 +16,11 @@
 // substep), so a discrete test suffices. Surfaces are thin (a vessel wall): each node's motion
 // xStart → x is also tested as a segment against the triangles near it, and a node that
 // crossed a face from its front side is put back on the front at distance r from the hit.
-// Self-contact uses the separating direction of each close link pair at xStart, so two links
-// cannot pass through each other within one substep even when they end up crossed.
+// Self-contact: link pairs closer than 2r are pushed apart along their separating direction
+// at xStart (evaluated at the current closest parameters), so a pair that ended a substep
+// crossed is pushed back to the side it came from; the push is capped at 4r. A pair that
+// passes fully through in one substep (more than 2r beyond) is not seen: substeps keep the
+// motion per substep below that at hand speeds.
 //
 // Faces point out of the material (the vessel generator's convention): "front" is the side the
 // normal points to. Units: millimetres; positions 3 by #nodes.

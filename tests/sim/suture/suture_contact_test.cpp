@@ -1,0 +1,215 @@
+#include "microsim/sim/collide/segment_segment.h"
+#include "microsim/sim/suture/suture_contact.h"
+#include "microsim/sim/suture/suture_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace microsim::sim::suture {
+namespace {
+
+// a closed-side cylinder of triangles about the y axis (radius 1, y in [−2, 2]), normals out
+ContactSurface cylinder(int segments = 32) {
+  Points x(3, 2 * segments);
+  std::vector<std::array<int, 3>> tris;
+  for (int j = 0; j < segments; ++j) {
+    const double a = 2.0 * std::numbers::pi * j / segments;
+    x.col(j) = Vec3(std::cos(a), -2.0, std::sin(a));
+    x.col(segments + j) = Vec3(std::cos(a), 2.0, std::sin(a));
+  }
+  for (int j = 0; j < segments; ++j) {
+    const int k = (j + 1) % segments;
+    tris.push_back({j, segments + k, k});
+    tris.push_back({j, segments + j, segments + k});
+  }
+  return ContactSurface(std::move(tris), x);
+}
+
+double radialDistance(const Vec3& p) { return std::hypot(p.x(), p.z()); }
+
+SutureModel threadOnly(int links, double length) {
+  SutureDef d;
+  d.links = links;
+  d.needleLinks = 0;
+  d.length = length;
+  return SutureModel(d);
+}
+
+TEST(SutureContact, CylinderNormalsPointOutward) {
+  const ContactSurface c = cylinder();
+  const auto& t = c.triangles()[0];
+  const Points& x = c.positions();
+  const Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+  const Vec3 centroid = (x.col(t[0]) + x.col(t[1]) + x.col(t[2])) / 3.0;
+  EXPECT_GT(n.dot(Vec3(centroid.x(), 0, centroid.z())), 0.0);
+}
+
+TEST(SutureContact, ANodeThatCrossedAThinFaceIsPutBackOnTheFront) {
+  // one face in the plane z = 0, normal +z; a node moving from z = +0.5 to −0.5 in one substep
+  Points sx(3, 3);
+  sx << 0, 1, 0,
+        0, 0, 1,
+        0, 0, 0;
+  const ContactSurface s({{0, 1, 2}}, sx);
+  Points start(3, 1), x(3, 1);
+  start.col(0) = Vec3(0.2, 0.2, 0.5);
+  x.col(0) = Vec3(0.2, 0.2, -0.5);
+  std::vector<std::uint8_t> movable(1, 1), touched(1, 0);
+  EXPECT_EQ(projectSurfaceContacts(x, start, s, 0.01, 0.0, movable, {}, touched), 1);
+  EXPECT_NEAR(x(2, 0), 0.01, 1e-12);
+  EXPECT_EQ(touched[0], 1);
+}
+
+TEST(SutureContact, CapsuleFrictionHoldsSmallSlipAndLetsLargeSlipGo) {
+  const Capsule jaw{Vec3(0, 0, -1), Vec3(0, 0, 1), 0.1};
+  std::vector<std::uint8_t> movable(1, 1), touched(1, 0);
+  Points start(3, 1), x(3, 1);
+  // pressed 0.01 into the jaw while slipping 0.002 along it: μ = 0.3 holds 0.003
+  start.col(0) = Vec3(0.11, 0, 0);
+  x.col(0) = Vec3(0.10, 0, 0.002);
+  projectCapsuleContacts(x, start, std::span<const Capsule>(&jaw, 1), 0.01, 0.3, movable, touched);
+  EXPECT_NEAR(x(2, 0), 0.0, 1e-15);
+  EXPECT_NEAR(radialDistance(Vec3(x(0, 0), 0, x(1, 0))), 0.11, 1e-12);
+  // slipping 0.01: only 0.003 of it is held back
+  x.col(0) = Vec3(0.10, 0, 0.01);
+  projectCapsuleContacts(x, start, std::span<const Capsule>(&jaw, 1), 0.01, 0.3, movable, touched);
+  EXPECT_NEAR(x(2, 0), 0.007, 1e-12);
+}
+
+class DrapeTest : public ::testing::TestWithParam<std::string> {};
+
+TEST(SutureDrape, AStraightSutureDroppedOnACylinderDrapesAndComesToRest) {
+  SutureModel m = threadOnly(80, 6.0);
+  m.gravity = Vec3(0, 0, -9810.0);
+  SutureState s = SutureState::laidOut(m);
+  for (int i = 0; i <= 80; ++i) s.x.col(i) = Vec3(-3.0 + 0.075 * i, 0.0, 1.1);
+  s.xPrev = s.x;
+  const ContactSurface surface = cylinder();
+  SutureWorld world;
+  world.surface = &surface;
+  auto solver = makeSutureSolver("direct");
+  SutureStepParams params;
+  params.iterations = 8;
+  double lastMotion = 0.0;
+  for (int k = 0; k < 250; ++k) {
+    const Points before = s.x;
+    solver->step(m, s, {}, world, params);
+    ASSERT_TRUE(s.x.allFinite());
+    lastMotion = (s.x - before).colwise().norm().maxCoeff();
+  }
+  // never inside the cylinder, both ends hang below its top, the middle lies on it
+  for (int i = 0; i <= 80; ++i) EXPECT_GT(radialDistance(s.x.col(i)), 1.0 - 5e-3) << i;
+  EXPECT_LT(s.x(2, 0), 0.0);
+  EXPECT_LT(s.x(2, 80), 0.0);
+  EXPECT_NEAR(s.x(2, 40), 1.01, 0.01);
+  // at rest: under a micrometre per frame
+  EXPECT_LT(lastMotion, 1e-3);
+  EXPECT_LT(maxAbsStretch(m, s.x, s.alive), 0.01);
+}
+
+// a thread laid along a polyline sampled by arc length (links of `d`)
+Points alongCurve(const std::vector<Vec3>& dense, int nodes, double d) {
+  Points x(3, nodes);
+  double travelled = 0.0;
+  std::size_t seg = 0;
+  double segStart = 0.0;
+  for (int i = 0; i < nodes; ++i) {
+    const double target = i * d;
+    while (seg + 2 < dense.size() && segStart + (dense[seg + 1] - dense[seg]).norm() < target) {
+      segStart += (dense[seg + 1] - dense[seg]).norm();
+      ++seg;
+    }
+    const double len = (dense[seg + 1] - dense[seg]).norm();
+    x.col(i) = dense[seg] + (target - segStart) / len * (dense[seg + 1] - dense[seg]);
+    travelled = target;
+  }
+  (void)travelled;
+  return x;
+}
+
+TEST_P(DrapeTest, TwoTurnsAroundAJawStayWrappedWhileTheFreeEndIsPulled) {
+  const SutureModel m = threadOnly(200, 10.0);  // links of 0.05 mm
+  const Capsule jaw{Vec3(0, 0, -1), Vec3(0, 0, 1), 0.1};
+  const double wrapR = 0.11;
+  // short tail, two helical turns (pitch 0.04 mm), then the long end leaving along +x
+  std::vector<Vec3> dense;
+  for (int k = 0; k <= 200; ++k) dense.push_back(Vec3(wrapR, -1.0 + 0.005 * k, 0.0));  // tail, along +y
+  const double turns = 2.0;
+  for (int k = 1; k <= 2000; ++k) {
+    const double a = 2.0 * std::numbers::pi * turns * k / 2000.0;
+    dense.push_back(Vec3(wrapR * std::cos(a), wrapR * std::sin(a), 0.04 * a / (2.0 * std::numbers::pi)));
+  }
+  const Vec3 leave = dense.back();
+  for (int k = 1; k <= 2000; ++k) dense.push_back(leave + Vec3(0, 0.005 * k, 0));
+  SutureState s = SutureState::laidOut(m);
+  s.x = alongCurve(dense, 201, 0.05);
+  s.xPrev = s.x;
+
+  SutureWorld world;
+  world.capsules.push_back(jaw);
+  auto solver = makeSutureSolver(GetParam());
+  // the tail is held (in the instrument tie it runs through the vessel); the long end is
+  // pulled 0.3 mm along its length
+  const Vec3 end0 = s.x.col(200);
+  const Vec3 tail = s.x.col(0);
+  for (int k = 1; k <= 30; ++k) {
+    const Grip g[2] = {{0, tail}, {200, end0 + Vec3(0.0, 0.01 * k, 0.0)}};
+    const SutureStepReport r = solver->step(m, s, g, world);
+    ASSERT_TRUE(s.x.allFinite());
+    EXPECT_TRUE(r.events.empty());
+  }
+  // winding of the chain about the jaw axis: still about two turns
+  double winding = 0.0;
+  int onJaw = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 a = s.x.col(i);
+    const Vec3 b = s.x.col(i + 1);
+    if (std::hypot(a.x(), a.y()) < 0.13 && std::hypot(b.x(), b.y()) < 0.13) {
+      winding += std::remainder(std::atan2(b.y(), b.x()) - std::atan2(a.y(), a.x()), 2.0 * std::numbers::pi);
+      ++onJaw;
+    }
+  }
+  EXPECT_GT(std::abs(winding), 2.0 * std::numbers::pi * 1.75);
+  EXPECT_GT(onJaw, 20);
+}
+
+TEST_P(DrapeTest, AStrandPulledDownAcrossAnotherStaysOnTop) {
+  // two pieces (link 30 broken): A along x at z = 0, B along y above it at z = 0.3
+  const SutureModel m = threadOnly(61, 6.1);
+  SutureState s = SutureState::laidOut(m);
+  for (int i = 0; i <= 30; ++i) s.x.col(i) = Vec3(-1.5 + 0.1 * i, 0, 0);
+  for (int i = 31; i <= 61; ++i) s.x.col(i) = Vec3(0.0, -1.5 + 0.1 * (i - 31), 0.3);
+  s.xPrev = s.x;
+  s.alive[30] = 0;
+  auto solver = makeSutureSolver(GetParam());
+  for (int k = 1; k <= 60; ++k) {
+    const double down = 0.026 * std::min(k, 50);
+    const Grip g[4] = {{0, Vec3(-1.2, 0, 0)}, {30, Vec3(1.2, 0, 0)},
+                       {31, Vec3(0, -1.2, 0.3 - down)}, {61, Vec3(0, 1.2, 0.3 - down)}};
+    solver->step(m, s, g, {});
+    ASSERT_TRUE(s.x.allFinite());
+  }
+  // B's ends are 0.7 mm below A's, yet at the crossing B still lies on top of A
+  double best = 1e9;
+  double above = 0.0;
+  for (int i = 10; i < 20; ++i)
+    for (int j = 41; j < 51; ++j) {
+      const collide::SegmentClosest c =
+          collide::closestSegmentSegment(s.x.col(i), s.x.col(i + 1), s.x.col(j), s.x.col(j + 1));
+      if (c.distance < best) {
+        best = c.distance;
+        above = c.onSecond.z() - c.onFirst.z();
+      }
+    }
+  EXPECT_GT(above, 0.0);
+  EXPECT_GT(best, 0.02 - 2e-3);
+  EXPECT_LT(s.x(2, 15), -0.05);  // A is pulled down by B
+}
+
+INSTANTIATE_TEST_SUITE_P(Suture, DrapeTest, ::testing::Values("ftl", "direct"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace microsim::sim::suture
