@@ -6,6 +6,7 @@
 // needs nothing else.
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <vector>
 
@@ -41,6 +42,26 @@ struct BlockSystem {
   }
   /// y = A p (both 3·size()).
   void multiply(const Eigen::VectorXd& p, Eigen::VectorXd& y) const;
+  /// The same matrix as a scalar row-major sparse matrix (3·size() square), columns
+  /// sorted within each row.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> toSparse() const;
+};
+
+/// z = M⁻¹ r for a symmetric positive definite M ≈ A, as PCG needs it.
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  virtual void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const = 0;
+};
+
+/// M = the block diagonal of A (each 3 by 3 block inverted once).
+class BlockJacobi final : public Preconditioner {
+ public:
+  explicit BlockJacobi(const BlockSystem& a);
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override;
+
+ private:
+  std::vector<Eigen::Matrix3d> inverse_;
 };
 
 struct PcgResult {
@@ -49,8 +70,11 @@ struct PcgResult {
   bool ok = true;                 ///< false on a breakdown (non-positive curvature, NaN)
 };
 
-/// Block-Jacobi preconditioned conjugate gradients for A x = b from x = 0, until
-/// |r| ≤ tolerance·|b| or maxIterations.
+/// Preconditioned conjugate gradients for A x = b from x = 0, until |r| ≤ tolerance·|b|
+/// or maxIterations.
+PcgResult solvePcg(const BlockSystem& a, const Preconditioner& m, const Eigen::VectorXd& b,
+                   Eigen::VectorXd& x, double tolerance, int maxIterations);
+/// The same with the block-Jacobi preconditioner.
 PcgResult solvePcg(const BlockSystem& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    double tolerance, int maxIterations);
 

@@ -3,8 +3,10 @@
 // The active region. A pull on a big mesh should cost what it costs on a small one, so
 // the unknowns are only the free nodes the pull reaches, a region R that grows as the
 // wave spreads:
-//  - seeds: when the state is bit-identical to what this solver returned last time and
-//    the topology is unchanged, the free neighbours of the control nodes that moved since
+//  - seeds: the region of the last solve when the same control nodes pull on the same
+//    topology (the pull will reach as far again, and the multigrid hierarchy built for
+//    that region still fits); then, when the state is bit-identical to what this solver
+//    returned last time, the free neighbours of the control nodes that moved since
 //    (plus the previous region if that solve stopped short of its tolerance); otherwise
 //    (first call, someone else moved nodes, a cut) one full force pass, and every free
 //    node whose |f_i| exceeds the threshold;
@@ -18,6 +20,7 @@
 // held where they are during a step, as if fixed; the result is exact once R stops growing.
 #include "microsim/sim/solve/spring_kernels.h"
 #include "solve/block_system.h"
+#include "solve/multigrid.h"
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
 
@@ -29,6 +32,10 @@ namespace microsim::sim::detail {
 namespace {
 
 constexpr double kReferenceTolerance = 1e-10;
+/// Regions of at least this many nodes are solved with the multigrid preconditioner.
+constexpr int kMultigridNodes = 600;
+/// CG iterations above which the multigrid hierarchy is rebuilt for the next step.
+constexpr int kRebuildIterations = 25;
 
 class NewtonSolver final : public TissueSolver {
  public:
@@ -39,6 +46,9 @@ class NewtonSolver final : public TissueSolver {
   void reset() override {
     lastModel_ = nullptr;
     lastX_.resize(3, 0);
+    lastRegion_.clear();
+    lastMovers_.clear();
+    multigridRegion_.clear();
   }
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
@@ -74,9 +84,14 @@ class NewtonSolver final : public TissueSolver {
       region_.clear();
     }
 
-    // seeds of the active region
+    // seeds of the active region: first the region of the last solve when the same
+    // control nodes pull on the same topology (the pull will reach as far again)
     std::vector<int> seeds;
     const bool local = params_.activeRegion && !reference_;
+    std::vector<int> movers = activeControlNodes(model, controls);
+    if (local && sameTopology(model) && movers == lastMovers_)
+      for (int i : lastRegion_)
+        if (free_[i]) seeds.push_back(i);
     if (local && cacheValid) {
       for (int c = 0; c < controls.size(); ++c) {
         const int node = controls.nodes[c];
@@ -142,17 +157,21 @@ class NewtonSolver final : public TissueSolver {
 
     state.v.setZero();
     lastConverged_ = report.status == SolveStatus::Converged;
+    lastRegion_ = region_;
+    lastMovers_ = std::move(movers);
     remember(model, x);
     report.seconds = clock.seconds();
     return report;
   }
 
  private:
-  bool cacheMatches(const SpringModel& model, const Points& x) const {
+  bool sameTopology(const SpringModel& model) const {
     return lastModel_ == &model && lastNodes_ == model.nodeCount() &&
-           lastLinks_ == model.linkCount() && lastAlive_ == model.aliveLinkCount() &&
-           lastGravity_ == model.gravity &&
-           lastX_.cols() == x.cols() &&
+           lastLinks_ == model.linkCount() && lastAlive_ == model.aliveLinkCount();
+  }
+
+  bool cacheMatches(const SpringModel& model, const Points& x) const {
+    return sameTopology(model) && lastGravity_ == model.gravity && lastX_.cols() == x.cols() &&
            std::memcmp(lastX_.data(), x.data(), sizeof(double) * x.size()) == 0;
   }
 
@@ -280,7 +299,15 @@ class NewtonSolver final : public TissueSolver {
     // inexact newton direction
     double eta = params_.linearTolerance;
     if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
-    const PcgResult pcg = solvePcg(system_, force_, direction_, eta, std::max(50, 3 * m));
+    PcgResult pcg;
+    if (m >= kMultigridNodes) {
+      // multigrid-preconditioned CG, the hierarchy kept while it serves
+      if (!multigridFits(model)) buildMultigrid(model, x);
+      pcg = solvePcg(system_, multigrid_, force_, direction_, eta, 300);
+      if (pcg.iterations > kRebuildIterations || !pcg.ok) multigridRegion_.clear();
+    } else {
+      pcg = solvePcg(system_, force_, direction_, eta, std::max(50, 3 * m));
+    }
     double slope = force_.dot(direction_);
     if (!pcg.ok || !(slope > 0.0) || !direction_.allFinite()) {
       // fall back to the block-Jacobi scaled force
@@ -312,6 +339,23 @@ class NewtonSolver final : public TissueSolver {
     return false;
   }
 
+  /// True when the kept hierarchy was built for this model, topology and region.
+  bool multigridFits(const SpringModel& model) const {
+    return multigridModel_ == &model && multigridLinks_ == model.linkCount() &&
+           multigridAlive_ == model.aliveLinkCount() && multigridRegion_ == region_;
+  }
+
+  void buildMultigrid(const SpringModel& model, const Points& x) {
+    const int m = static_cast<int>(region_.size());
+    Eigen::Matrix3Xd positions(3, m);
+    for (int r = 0; r < m; ++r) positions.col(r) = x.col(region_[r]);
+    multigrid_.build(system_, positions);
+    multigridModel_ = &model;
+    multigridLinks_ = model.linkCount();
+    multigridAlive_ = model.aliveLinkCount();
+    multigridRegion_ = region_;
+  }
+
   SolverParams params_;
   bool reference_;
   // the last state returned, to find what moved since
@@ -320,6 +364,8 @@ class NewtonSolver final : public TissueSolver {
   Points lastX_{3, 0};
   Vec3 lastGravity_ = Vec3::Zero();
   bool lastConverged_ = true;
+  std::vector<int> lastRegion_;  ///< the region of the last solve
+  std::vector<int> lastMovers_;  ///< the control nodes that pulled in it
   // per solve
   std::vector<unsigned char> free_;
   int freeCount_ = 0;
@@ -331,6 +377,11 @@ class NewtonSolver final : public TissueSolver {
   Eigen::VectorXd force_, direction_;
   Points start_;
   BlockSystem system_;
+  // the multigrid hierarchy and what it was built for
+  AggregationMultigrid multigrid_;
+  const SpringModel* multigridModel_ = nullptr;
+  int multigridLinks_ = -1, multigridAlive_ = -1;
+  std::vector<int> multigridRegion_;
 };
 
 }  // namespace

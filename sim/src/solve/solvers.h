@@ -23,10 +23,14 @@
 //           stiffness matrix, solved by block-Jacobi preconditioned CG; then v += Δv,
 //           x += h v. The peer every engine ships (SOFA's EulerImplicit + CG).
 // newton    one Newton step towards equilibrium f(x) + m g = 0: K d = f with K the clamped
-//           Hessian (PSD-projected per spring, see spring_kernels.h), solved by
-//           block-Jacobi PCG to an adaptive relative tolerance, then a backtracking line
-//           search on the total energy (Armijo). With SolverParams::activeRegion, the
-//           unknowns are only the free nodes the pull reaches (newton_solver.cpp).
+//           Hessian (PSD-projected per spring, see spring_kernels.h), solved by PCG to an
+//           adaptive relative tolerance (inexact Newton, η = clamp(residual, 1e-4, 1e-2)),
+//           then a backtracking line search on the total energy (Armijo). The
+//           preconditioner is block Jacobi on small regions and smoothed-aggregation
+//           multigrid (multigrid.h) on regions of 600 nodes or more, its hierarchy kept
+//           across iterations and steps until CG slows down. With
+//           SolverParams::activeRegion, the unknowns are only the free nodes the pull
+//           reaches (newton_solver.cpp).
 // reference newton on the whole mesh until the relative residual is ≤ 1e-10 (or the
 //           budget's own tolerance when smaller), whatever iteration budget it is given.
 
