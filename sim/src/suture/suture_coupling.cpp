@@ -1,5 +1,6 @@
 #include "microsim/sim/suture/suture_coupling.h"
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -23,15 +24,19 @@ std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
     for (std::size_t k = 0; k < cs.size(); ++k) {
       if (cs[k].hard) continue;
-      // each side towards a neighbouring constraint pulls by its excess length
+      // the tightest side's excess, carried by every taut side (one tension through the pierce)
+      double excess = 0.0;
       Vec3 pull = Vec3::Zero();
       for (const std::size_t q : {k - 1, k + 1}) {
         if (q >= cs.size()) continue;  // k − 1 wraps to a huge value at k = 0
         const Vec3 toQ = cs[q].position - cs[k].position;
         const double distance = toQ.norm();
-        const double excess = distance - model.arc(cs[k].node, cs[q].node);
-        if (excess > 0.0 && distance > 0.0) pull += excess * toQ / distance;
+        const double arc = model.arc(cs[k].node, cs[q].node);
+        excess = std::max(excess, distance - arc);
+        const int link = std::min(cs[k].node, cs[q].node);
+        if (distance > 0.0 && distance >= arc - model.rest(link)) pull += toQ / distance;
       }
+      pull *= excess;
       pulls[static_cast<std::size_t>(cs[k].source)] = pull;
     }
   }

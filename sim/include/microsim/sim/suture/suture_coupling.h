@@ -6,12 +6,14 @@
 //   1. readPiercePoints: every pierce point is re-read from the tissue, P = u a + v b + w c
 //      for its face (a, b, c) and barycentrics (u, v, w), so the suture follows the vessel;
 //   2. the suture steps (suture_solver.h): it slides through the pierces to relieve stretch;
-//   3. couplingControls: what stretch sliding could not relieve pulls the tissue. For a pierce
-//      P whose side towards the neighbouring constraint Q (grip or pierce) must span more than
-//      its rest arc, the side pulls P towards Q by the excess:
-//          pull(P) = Σ_sides max(0, |Q − P| − arc) · (Q − P)/|Q − P|     (mm)
-//      — the displacement that would make the sides exactly taut, to first order. Each free
-//      (not fixed) corner node of the pierced face becomes a control node with target
+//   3. couplingControls: what stretch sliding could not relieve pulls the tissue. A pierce P
+//      between neighbouring constraints Q (grip or pierce; a free end pulls nothing) slides
+//      freely, so one tension runs through it: with e = max_sides (|Q − P| − arc) the
+//      tightest side's excess length, every taut side pulls P towards its Q by e:
+//          pull(P) = max(e, 0) · Σ_{taut sides} (Q − P)/|Q − P|              (mm)
+//      where a side is taut when |Q − P| ≥ arc − l (within one link of straight: sliding moves
+//      whole links, so a side can stay up to one link short of taut). Each free (not fixed)
+//      corner node of the pierced face becomes a control node with target
 //      x_node + gain · pull(P) (pulls of several pierces on one node are averaged), which the
 //      existing tissue solvers honour as SpringControls (a forceps grab does the same).
 //   4. the tissue solves with those controls; the next frame reads the moved points back.
@@ -40,7 +42,7 @@ Vec3 tissuePoint(const SpringModel& tissue, const Points& tissueX, int face, con
 void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureState& state);
 
 /// pull(P) of the header essay for each pierce, in SutureState::pierces order (mm); zero for
-/// passive pierces (on the needle) and for pierces with no taut side.
+/// passive pierces (on the needle) and for pierces with no over-long side.
 std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
                               std::span<const Grip> grips);
 
