@@ -1,5 +1,6 @@
 #include "bench_report.h"
 #include "collision_bench.h"
+#include "suture_bench.h"
 #include "tissue_benches.h"
 
 namespace microsim::bench {
@@ -10,6 +11,7 @@ const std::vector<BenchEntry>& benchRegistry() {
       {"table1", "qss iterations per 1/30 s with and without cutout (paper Table 1)", runTable1},
       {"fig5", "qss max/mean error vs box size and vs iterations (paper Fig. 5)", runFig5},
       {"speed-error", "time to 10/1/0.1 % error for every tissue solver, warm and cold", runSpeedError},
+      {"suture", "suture step time and max stretch vs links (50-2000), ftl (paper) vs direct", runSuture},
       {"collision", "sphere/AABB trees: build, maintenance, query vs distance, against FCL", runCollision},
   };
   return entries;
