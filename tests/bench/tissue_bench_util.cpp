@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace microsim::bench {
 
@@ -10,6 +11,12 @@ using namespace microsim::sim;
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 SpringState referenceEquilibrium(const SpringModel& model, const SpringState& start,
@@ -46,6 +53,7 @@ PullCase warmPull(const std::string& name, const SpringModel& model, int node, c
   c.model = model;
   c.start = referenceEquilibrium(c.model, SpringState::atRest(c.model), pullTo(c.model, node, step));
   c.controls = pullTo(c.model, node, 2.0 * step);
+  c.previous = pullTo(c.model, node, step);
   c.displacement = step.norm();
   c.reference = referenceEquilibrium(c.model, c.start, c.controls);
   return c;
@@ -87,11 +95,15 @@ ErrorCurve sweepErrorAgainstTime(const PullCase& c, const std::string& solverNam
     double best = 1e300;
     Points x;
     for (int r = 0; r < repeats; ++r) {
-      SpringState s = c.start;
       auto solver = makeSolver(solverName, params);
-      const double t0 = nowSeconds();
+      if (c.previous.size() > 0) {
+        SpringState p = SpringState::atRest(c.model);
+        solver->solve(c.model, p, c.previous, budget);
+      }
+      SpringState s = c.start;
+      const double t0 = cpuSeconds();
       solver->solve(c.model, s, c.controls, budget);
-      best = std::min(best, nowSeconds() - t0);
+      best = std::min(best, cpuSeconds() - t0);
       x = s.x;
       if (best > 0.02) break;  // long runs are measured once
     }

@@ -25,6 +25,9 @@ struct PullCase {
   sim::SpringControls controls;  ///< this cycle's targets
   double displacement = 1.0;   ///< how far the control moves this cycle (mm)
   sim::SpringState reference;  ///< the equilibrium of this cycle
+  /// warm: the previous cycle's targets, which every measured solver first solves itself
+  /// from rest (untimed) so that its caches are those of a running simulation; cold: none
+  sim::SpringControls previous;
 };
 
 /// Builds warm and cold cases of pulling `node` by `step` from rest (cold: rest → step;
@@ -57,7 +60,12 @@ struct ErrorCurve {
 /// Runs `solverName` from the case's start with growing budgets (iterations 1, 2, 3, 5,
 /// 8, ... for the iterative solvers, residual tolerances 10^(-j/2) for newton), each
 /// from a fresh solver and a copy of the start, until the error reaches `stopPercent`
-/// or one run takes longer than `capSeconds`. Times are the best of `repeats` runs.
+/// or one run takes longer than `capSeconds`. Times are the best of `repeats` runs, in
+/// CPU time of the measuring thread (cpuSeconds), so that other load on the machine does
+/// not count. Warm cases first run the previous cycle through the same solver with the
+/// same budget, untimed, as a simulation running at that budget would have (newton's
+/// active region and multigrid hierarchy, qss's NODE-ORDERING); the state is then set
+/// to the case's start, the previous cycle's exact equilibrium.
 ErrorCurve sweepErrorAgainstTime(const PullCase& c, const std::string& solverName,
                                  const sim::SolverParams& params, double stopPercent,
                                  double capSeconds, int repeats);
@@ -68,5 +76,7 @@ sim::SolverParams benchParams(const std::string& solverName);
 
 /// Seconds of wall clock since an arbitrary start.
 double nowSeconds();
+/// CPU seconds the calling thread has used.
+double cpuSeconds();
 
 }  // namespace microsim::bench

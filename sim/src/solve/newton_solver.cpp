@@ -89,9 +89,8 @@ class NewtonSolver final : public TissueSolver {
     std::vector<int> seeds;
     const bool local = params_.activeRegion && !reference_;
     std::vector<int> movers = activeControlNodes(model, controls);
-    if (local && sameTopology(model) && movers == lastMovers_)
-      for (int i : lastRegion_)
-        if (free_[i]) seeds.push_back(i);
+    clearRegion();
+    if (local && sameTopology(model) && movers == lastMovers_) grow(model, lastRegion_, 0);
     if (local && cacheValid) {
       for (int c = 0; c < controls.size(); ++c) {
         const int node = controls.nodes[c];
@@ -116,18 +115,24 @@ class NewtonSolver final : public TissueSolver {
       for (int i = 0; i < n; ++i)
         if (free_[i]) seeds.push_back(i);
     }
-    clearRegion();
     growths_ = 0;
+    if (local) {
+      // seeds already in the kept region bring no layers
+      seeds.erase(std::remove_if(seeds.begin(), seeds.end(), [&](int i) { return local_[i] >= 0; }),
+                  seeds.end());
+    }
     grow(model, seeds, local ? 2 : 0);
 
     // newton iterations
     report.status = SolveStatus::IterationLimit;
     double startResidual = -1.0;
     while (true) {
+      bool grewThisStep = false;
       double residual = regionResidual(model, x);
       // grow while the boundary is out of balance
       while (local && !boundaryOut_.empty()) {
         grow(model, boundaryOut_, 1 << std::min(++growths_, 12));
+        grewThisStep = true;
         residual = regionResidual(model, x);
       }
       report.residual = residual / scale_;
@@ -150,7 +155,7 @@ class NewtonSolver final : public TissueSolver {
         report.status = SolveStatus::TimeLimit;
         break;
       }
-      const bool moved = step(model, x, report.residual);
+      const bool moved = step(model, x, report.residual, grewThisStep);
       ++report.iterations;
       if (!moved) break;
     }
@@ -274,7 +279,8 @@ class NewtonSolver final : public TissueSolver {
   }
 
   /// One Newton step on the region from force_ (current); false when it could not move.
-  bool step(const SpringModel& model, Points& x, double relativeResidual) {
+  /// `growing`: the region grew just before this step.
+  bool step(const SpringModel& model, Points& x, double relativeResidual, bool growing) {
     const int m = static_cast<int>(region_.size());
     // clamped Hessian of the region
     system_.clear(m);
@@ -300,8 +306,9 @@ class NewtonSolver final : public TissueSolver {
     double eta = params_.linearTolerance;
     if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
     PcgResult pcg;
-    if (m >= kMultigridNodes) {
-      // multigrid-preconditioned CG, the hierarchy kept while it serves
+    if (m >= kMultigridNodes && (!growing || multigridFits(model))) {
+      // multigrid-preconditioned CG, the hierarchy kept while it serves (and not built
+      // for a region that is still growing)
       if (!multigridFits(model)) buildMultigrid(model, x);
       pcg = solvePcg(system_, multigrid_, force_, direction_, eta, 300);
       if (pcg.iterations > kRebuildIterations || !pcg.ok) multigridRegion_.clear();
