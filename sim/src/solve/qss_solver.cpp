@@ -73,24 +73,39 @@ class QssSolver final : public TissueSolver {
           double f0 = mg[i] * g.x(), f1 = mg[i] * g.y(), f2 = mg[i] * g.z();
           double kd = 0.0;
           const bool linear = linear_[p];
-          for (int e = start_[p]; e < start_[p + 1]; ++e) {
-            const Neighbour& nb = neighbours_[e];
-            const double* xj = x.data() + 3 * nb.node;
-            const double d0 = xj[0] - xi0, d1 = xj[1] - xi1, d2 = xj[2] - xi2;
-            const double l = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
-            double s;
-            if (l < kMinLength) {
-              s = nb.rest <= kMinLength ? nb.k : 0.0;
-              if (!linear) kd += nb.k;
-            } else {
-              s = springTensionOverLength(nb.k, nb.rest, nb.c, l);
-              if (!linear) kd += springTensionDerivative(nb.k, nb.rest, nb.c, l);
+          if (linear) {
+            // constant-law links: T / l = k (l − r) / l (the same arithmetic as the kernel)
+            for (int e = start_[p]; e < start_[p + 1]; ++e) {
+              const Neighbour& nb = neighbours_[e];
+              const double* xj = x.data() + 3 * nb.node;
+              const double d0 = xj[0] - xi0, d1 = xj[1] - xi1, d2 = xj[2] - xi2;
+              const double l = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+              const double s = l < kMinLength ? (nb.rest <= kMinLength ? nb.k : 0.0)
+                                              : nb.k * (l - nb.rest) / l;
+              f0 += s * d0;
+              f1 += s * d1;
+              f2 += s * d2;
             }
-            f0 += s * d0;
-            f1 += s * d1;
-            f2 += s * d2;
+            kd = linearStiffness_[p];
+          } else {
+            for (int e = start_[p]; e < start_[p + 1]; ++e) {
+              const Neighbour& nb = neighbours_[e];
+              const double* xj = x.data() + 3 * nb.node;
+              const double d0 = xj[0] - xi0, d1 = xj[1] - xi1, d2 = xj[2] - xi2;
+              const double l = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+              double s;
+              if (l < kMinLength) {
+                s = nb.rest <= kMinLength ? nb.k : 0.0;
+                kd += nb.k;
+              } else {
+                s = springTensionOverLength(nb.k, nb.rest, nb.c, l);
+                kd += springTensionDerivative(nb.k, nb.rest, nb.c, l);
+              }
+              f0 += s * d0;
+              f1 += s * d1;
+              f2 += s * d2;
+            }
           }
-          if (linear) kd = linearStiffness_[p];
           const Vec3 f(f0, f1, f2);
           worst = std::max(worst, f.squaredNorm());
           const double alpha = params_.alpha > 0.0 ? params_.alpha : (kd > 0.0 ? omega / kd : 0.0);
