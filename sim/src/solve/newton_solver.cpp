@@ -33,7 +33,7 @@ namespace {
 
 constexpr double kReferenceTolerance = 1e-10;
 /// Regions of at least this many nodes are solved with the multigrid preconditioner.
-constexpr int kMultigridNodes = 600;
+constexpr int kMultigridNodes = 2000;
 /// CG iterations above which the multigrid hierarchy is rebuilt for the next step.
 constexpr int kRebuildIterations = 25;
 

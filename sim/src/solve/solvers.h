@@ -27,7 +27,7 @@
 //           adaptive relative tolerance (inexact Newton, η = clamp(residual, 1e-4, 1e-2)),
 //           then a backtracking line search on the total energy (Armijo). The
 //           preconditioner is block Jacobi on small regions and smoothed-aggregation
-//           multigrid (multigrid.h) on regions of 600 nodes or more, its hierarchy kept
+//           multigrid (multigrid.h) on regions of 2000 nodes or more, its hierarchy kept
 //           across iterations and steps until CG slows down. With
 //           SolverParams::activeRegion, the unknowns are only the free nodes the pull
 //           reaches (newton_solver.cpp).
