@@ -14,6 +14,8 @@
 //  - every iteration the boundary B (free nodes next to R, outside it) is checked; nodes of
 //    B whose |f_i| exceeds the threshold join R with 2^g further layers (g = growths so far),
 //    so that a wave crossing L levels costs O(log L) growths;
+//  - a region over half the free nodes takes them all (it saves little, and a region
+//    that stays the same keeps its multigrid hierarchy from cycle to cycle);
 //  - nodes outside R ∪ B keep the forces they had, which the previous solve left below
 //    the threshold, so max over R ∪ B is the residual of the whole mesh.
 // The threshold is the budget's residual tolerance times forceScale. Nodes outside R are
@@ -217,6 +219,15 @@ class NewtonSolver final : public TissueSolver {
         }
       frontier.swap(next);
     }
+    // a region over most of the mesh saves little: take all of it, once, so that it
+    // (and its multigrid hierarchy) stays the same from cycle to cycle
+    if (2 * static_cast<int>(region_.size()) > freeCount_ &&
+        static_cast<int>(region_.size()) < freeCount_)
+      for (int i = 0; i < static_cast<int>(free_.size()); ++i)
+        if (free_[i] && local_[i] < 0) {
+          local_[i] = static_cast<int>(region_.size());
+          region_.push_back(i);
+        }
   }
 
   /// Total force on node i (µN).
