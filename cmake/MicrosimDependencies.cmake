@@ -4,6 +4,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(assimp REQUIRED)
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Sql Gui Widgets OpenGL OpenGLWidgets Network Charts LinguistTools Test)
 find_package(Threads REQUIRED)
+# OpenIGTLink (Debian libopenigtlink-dev) has no imported target: OpenIGTLink_INCLUDE_DIRS, _LIBRARIES
+find_package(OpenIGTLink REQUIRED PATHS /usr/lib/openigtlink)
 
 if(MICROSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
