@@ -1,0 +1,152 @@
+#pragma once
+// The microsurgery scene at run time: the tissue, the needle and suture, the tools, and the
+// fixed-rate step that ties them together (DESIGN.md §Data flow of one frame).
+//
+// One step of dt = 1/rate consumes one InputFrame, in four timed stages:
+//   interactions  place the tools from the frame; a forceps that closes takes hold of the
+//                 suture (a grip, hard) or of the tissue between its tips (control nodes),
+//                 one that opens lets go; then (after collision) new pierces become soft
+//                 constraints of the suture, cut links are removed, and the tissue's controls
+//                 are assembled (scene controls, held nodes, the suture's pull);
+//   suture        pierce points re-read from the tissue, the suture steps with the grips
+//                 (the needle moves with the hand holding it), the coupling pull is computed;
+//   collision     the needle tip's path this step is tested against the tissue faces
+//                 (pierce entry and exit; only while a forceps holds the needle: nothing
+//                 drives a loose needle through a wall), a scalpel's blade against the
+//                 links; after the tissue solve the trees are refit where nodes moved;
+//   tissue        the tissue solver runs with those controls.
+// Only what the scene declares is built: no needle, no face tree and no suture stage; no
+// scalpel, no link tree.
+//
+// Determinism. In StepMode::Deterministic the tissue solve stops on the scene's iteration
+// limit and tolerance only, never on the clock, so the same scene and the same frames give
+// bit-identical states (hash()) on every run and build. StepMode::RealTime adds the wall-clock
+// budget: the tissue solve gets what the step budget leaves after the other stages, and the
+// solver checks its clock between iterations, so a step overruns its budget by at most one
+// tissue iteration (plus any stage that alone exceeds it).
+//
+// Rejected input (NaN, non-unit rotation, closure out of range, time going backwards) never
+// reaches the tools: the previous accepted frame is used again and an InputRejected event
+// says why.
+//
+// Units: millimetres, seconds, grams.
+
+#include "microsim/sim/scene/input_frame.h"
+#include "microsim/sim/scene/scene_def.h"
+#include "microsim/sim/scene/scene_events.h"
+#include "microsim/sim/solve/solver.h"
+#include "microsim/sim/suture/suture_model.h"
+#include "microsim/sim/suture/suture_solver.h"
+#include "microsim/sim/tools/forceps.h"
+#include "microsim/sim/tools/needle.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace microsim::sim {
+
+/// Wall-clock time of one step's stages (s). Reported, never used by the simulation in
+/// deterministic mode.
+struct StageTimes {
+  double interactions = 0.0;
+  double suture = 0.0;
+  double collision = 0.0;
+  double tissue = 0.0;
+  double total = 0.0;
+};
+
+enum class StepMode : std::uint8_t { Deterministic, RealTime };
+
+struct StepReport {
+  StageTimes times;
+  SolveReport tissue;
+  bool inputRejected = false;
+  int events = 0;  ///< events this step added
+};
+
+class SceneCollision;
+
+class Scene {
+ public:
+  explicit Scene(SceneDef def, StepMode mode = StepMode::Deterministic);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  /// Advances one fixed step of dt with this frame's hands.
+  StepReport step(const InputFrame& frame);
+
+  double dt() const { return 1.0 / def_.step.rateHz; }
+  double time() const { return time_; }
+  int steps() const { return steps_; }
+  const SceneDef& def() const { return def_; }
+
+  const SpringModel& tissue() const { return def_.tissue.model; }
+  const SpringState& tissueState() const { return state_; }
+  /// The suture and its state; null without a needle.
+  const suture::SutureModel* sutureModel() const { return suture_ ? &*suture_ : nullptr; }
+  const suture::SutureState* sutureState() const { return suture_ ? &sutureState_ : nullptr; }
+  /// The forceps of a hand; null when the scene declares none for it.
+  const tools::Forceps* forceps(Hand hand) const {
+    const auto& f = forceps_[static_cast<std::size_t>(hand)];
+    return f ? &*f : nullptr;
+  }
+  /// The controls the last tissue solve had.
+  const SpringControls& controls() const { return controls_; }
+
+  const std::vector<SceneEvent>& events() const { return events_; }
+  const std::vector<PierceEvent>& pierces() const { return pierces_; }
+
+  /// Golden-state hash: tissue positions and velocities, the suture's positions, previous
+  /// positions, links and pierces, what every forceps holds, and the step count.
+  std::uint64_t hash() const;
+
+ private:
+  void placeTools(const InputFrame& frame);
+  void grab(int hand);
+  void stepSuture();
+  void applyCrossings();
+  void assembleControls();
+  PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const;
+  void addEvent(SceneEventKind kind, int hand, int index, int count);
+
+  SceneDef def_;
+  StepMode mode_;
+  SpringState state_;
+  std::unique_ptr<TissueSolver> solver_;
+  SpringControls controls_;
+
+  std::optional<suture::SutureModel> suture_;
+  suture::SutureState sutureState_;
+  std::unique_ptr<suture::SutureSolver> sutureSolver_;
+  std::unique_ptr<suture::ContactSurface> surface_;
+  Vec3 tipBefore_ = Vec3::Zero();
+  Vec3 tipAfter_ = Vec3::Zero();
+  Vec3 tangentBefore_ = Vec3::UnitX();
+  Vec3 tangentAfter_ = Vec3::UnitX();
+  bool needleHeld_ = false;
+  SpringControls coupling_;
+
+  std::array<std::optional<tools::Forceps>, kHandCount> forceps_;
+  std::array<bool, kHandCount> grabDue_{};
+  std::array<std::optional<Eigen::Isometry3d>, kHandCount> blade_;     // this step
+  std::array<std::optional<Eigen::Isometry3d>, kHandCount> bladeWas_;  // last step
+  std::unique_ptr<SceneCollision> collision_;
+
+  std::optional<InputFrame> lastFrame_;
+  double time_ = 0.0;
+  int steps_ = 0;
+  std::vector<SceneEvent> events_;
+  std::vector<PierceEvent> pierces_;
+};
+
+/// Loads a scene file and builds it; the error is the loader's.
+std::variant<std::unique_ptr<Scene>, SceneError> openScene(const std::string& path,
+                                                           StepMode mode = StepMode::Deterministic);
+
+}  // namespace microsim::sim

@@ -1,0 +1,143 @@
+#pragma once
+// The microsurgery scene file: everything one simulated attempt needs, declared, so that
+// only what is declared is built and simulated (DESIGN.md "model only what a scene needs").
+// The schema is resources/schema/scene.schema.json; examples are in resources/scenes/.
+//
+//   {"version": 1,                                   optional; 1 is the only version
+//    "objects": [ OBJECT, ... ],                     required, at least one (the tissue)
+//    "gravity": [x, y, z],                           mm/s², off unless given
+//    "solver": {"name" ("newton"), "iterations" (20), "tolerance" (1e-6), "alpha",
+//               "relaxation", "cutout", "momentum", "damping", "active_region",
+//               "linear_tolerance"},
+//    "tools": {"forceps": [FORCEPS, ...] (at most one per hand),
+//              "needle": NEEDLE, "scalpel": SCALPEL},          each optional
+//    "camera": {"eye", "target", "up" ([x,y,z] mm), "fov_deg"},
+//    "step": {"rate_hz" (100), "budget_ms" (8)},
+//    "collision": {"tree": "aabb" (default) | "sphere"}}
+//
+// OBJECT is any object of a spring scene (spring_scene.h: spring-mesh, lattice, vessel,
+// grid, tetra-lattice, surface-mesh; read by that loader, so its rules and errors hold) or
+//   {"type": "severed-vessel", "name", "gap" (mm between the cut ends, 0.5), "center"
+//    ([x,y,z] mm, midpoint of the gap), "axis" ([x,y,z], from end 0 to end 1), and the
+//    vessel fields "preset", "radius", "wall_thickness", "length", "rings",
+//    "nodes_per_ring", "k_layer", "k_between", "mass", "damping", "clamp_first_ring"}:
+//    two vessel ends, each clamped at its far ring, their cut ends facing across the gap.
+// FORCEPS: {"hand": "left"|"right" (required), "mesh" (required, OBJ/glTF of one jaw,
+//    relative to the scene file), "scale" (mm per file unit, 1), "opening_deg" (20),
+//    "grab_radius" (mm, 0.08), "close_at" (closure, 0.8)}
+// NEEDLE: {"shape": "curved"|"straight", "radius", "length" (needle, mm), "thread_length"
+//    (mm), "links", "needle_links", "break_stretch", "contact_radius", "friction", "drag",
+//    "position" ([x,y,z] mm) and "rotation" ([w,x,y,z], needle frame → scene) of the needle
+//    at the start, "solver" ("direct"|"ftl"), "substeps", "iterations", "coupling_gain"}
+// SCALPEL: {"blade_length" (mm, 2), "blade_height" (mm, 0.5)}
+//
+// Loading never throws and never prints; errors are SceneError (spring_scene.h) with the
+// file, line, column and field path ("tools.forceps[1].mesh"); a missing tool mesh is
+// SceneErrorKind::MeshImport with the importer's error.
+
+#include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/mesh/vessel.h"
+#include "microsim/sim/scene/input_frame.h"
+#include "microsim/sim/scene/spring_scene.h"
+#include "microsim/sim/solve/solver.h"
+#include "microsim/sim/suture/suture_coupling.h"
+#include "microsim/sim/suture/suture_model.h"
+#include "microsim/sim/suture/suture_solver.h"
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace microsim::sim {
+
+inline constexpr int kSceneFileVersion = 1;
+
+/// A vessel of the scene and where its parts sit in the merged tissue model.
+struct SceneVessel {
+  int object = 0;       ///< index into SceneDef::tissue.objects
+  int end = -1;         ///< 0 or 1 for the ends of a severed vessel, -1 for a single vessel
+  VesselDef def;        ///< the generator's parameters (origin, direction as placed)
+  int firstNode = 0;    ///< node offset in the merged model
+  int firstTriangle = 0;
+  TriangleRange outerSurface;  ///< global triangle indices
+  TriangleRange innerSurface;
+  TriangleRange clampedEnd;
+  TriangleRange cutEnd;
+};
+
+/// Microscope defaults for the viewport (mm, degrees).
+struct CameraDef {
+  Vec3 eye = Vec3(0.0, -8.0, 40.0);  ///< mm
+  Vec3 target = Vec3::Zero();        ///< mm
+  Vec3 up = Vec3::UnitY();
+  double fovDeg = 12.0;  ///< vertical field of view (degrees)
+};
+
+/// One forceps: two rigid jaws of the same triangulated shape (tools/forceps.h).
+struct ForcepsDef {
+  Hand hand = Hand::Left;
+  std::string meshFile;           ///< as resolved at load
+  Points jawVertices{3, 0};       ///< the jaw in its frame, mm (tip at the origin, along +x)
+  std::vector<std::array<int, 3>> jawTriangles;
+  double openingDeg = 20.0;       ///< angle of each jaw off the axis when open (degrees)
+  double grabRadius = 0.08;       ///< mm: reach of a grab around the tip segment
+  double closeAt = 0.8;           ///< closure (0..1) at and above which the jaws hold
+};
+
+/// The needle with its suture (suture/suture_model.h) and how it steps.
+struct NeedleDef {
+  suture::SutureDef suture;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< needle frame → scene at start
+  std::string solver = "direct";
+  suture::SutureStepParams step;    ///< dt is overwritten with the scene's step
+  suture::CouplingParams coupling;
+};
+
+/// A scalpel blade: the rectangle [0, length] × {0} × [0, height] of the tool frame; the
+/// cutting edge is its x axis from the tip (tools/scalpel.h).
+struct ScalpelDef {
+  double bladeLength = 2.0;  ///< mm
+  double bladeHeight = 0.5;  ///< mm
+};
+
+struct TissueSolverDef {
+  std::string name = "newton";
+  SolverParams params;
+  int iterations = 20;        ///< per step
+  double tolerance = 1e-6;    ///< relative residual that ends a step's solve early
+};
+
+struct StepDef {
+  double rateHz = 100.0;    ///< fixed step rate (Hz): dt = 1 / rate
+  double budgetMs = 8.0;    ///< wall-clock budget of one step (ms), used by real-time stepping
+};
+
+enum class CollisionTree : std::uint8_t { Aabb, Sphere };
+
+struct SceneDef {
+  std::string file;  ///< the scene file as given, empty when parsed from memory
+  SpringScene tissue;                  ///< merged tissue model, static controls, objects
+  std::vector<SceneVessel> vessels;    ///< the vessels among the objects, in order
+  std::array<std::optional<ForcepsDef>, kHandCount> forceps;  ///< by hand
+  std::optional<NeedleDef> needle;
+  std::optional<ScalpelDef> scalpel;
+  TissueSolverDef solver;
+  CameraDef camera;
+  StepDef step;
+  CollisionTree tree = CollisionTree::Aabb;
+};
+
+using SceneDefLoad = std::variant<SceneDef, SceneError>;
+
+/// Reads the scene file at `path`; mesh files resolve against its directory.
+SceneDefLoad loadSceneDef(const std::string& path);
+/// Parses scene JSON from memory; `file` labels errors, `baseDir` resolves mesh files.
+SceneDefLoad parseSceneDef(std::string_view text, const std::string& file = {},
+                           const std::string& baseDir = ".");
+
+}  // namespace microsim::sim

@@ -1,0 +1,60 @@
+#pragma once
+// What happened during an attempt, as data for assessment (DESIGN.md §Assessment) and for
+// `microsim-cli run`: grabs and releases, pierces with their geometry, cuts, suture breaks,
+// rejected input. The engine reports enums and numbers; words are the app's business.
+//
+// Units: millimetres, seconds, degrees.
+
+#include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/scene/input_frame.h"
+
+#include <cstdint>
+
+namespace microsim::sim {
+
+enum class SceneEventKind : std::uint8_t {
+  GrabTissue,     ///< a forceps closed on tissue: `count` nodes became control nodes
+  ReleaseTissue,  ///< it opened: `count` nodes were freed
+  GripSuture,     ///< a forceps closed on the suture (`index` = node; needle nodes ≤ swage)
+  ReleaseSuture,  ///< it let go of the suture
+  PierceEntry,    ///< the needle tip entered a wall (`index` into Scene::pierces())
+  PierceExit,     ///< the needle tip left a wall (`index` into Scene::pierces())
+  Cut,            ///< the scalpel removed `count` links
+  SutureBreak,    ///< the suture broke at link `index`
+  SuturePulledOut,///< the suture slid out of a pierce
+  InputRejected,  ///< a frame was unusable (`rejection`); the previous one was used instead
+};
+
+/// Which surface of a vessel a pierce crossed.
+enum class VesselSurface : std::uint8_t { Outer, Inner, CutEnd, ClampedEnd, NotAVessel };
+/// Which half of the circumference, seen from the microscope: the front wall faces the
+/// camera, the back wall is the far side (catching it is the classic error).
+enum class VesselWall : std::uint8_t { Front, Back };
+
+struct PierceEvent {
+  double time = 0.0;                ///< s, end of the step in which the tip crossed
+  bool entry = true;                ///< into the wall (true) or out of it
+  Vec3 point = Vec3::Zero();        ///< mm
+  int face = -1;                    ///< tissue triangle
+  Vec3 barycentric = Vec3::Zero();  ///< on the face's corners
+  Vec3 tangent = Vec3::Zero();      ///< the needle's forward tangent at the tip (unit)
+  Vec3 normal = Vec3::Zero();       ///< the face normal, out of the wall material (unit)
+  double angleDeg = 0.0;            ///< acos |tangent·normal|: 0 = perpendicular bite
+  int vessel = -1;                  ///< index into SceneDef::vessels, -1 for other tissue
+  int end = -1;                     ///< 0 or 1 for the ends of a severed vessel, else -1
+  VesselSurface surface = VesselSurface::NotAVessel;
+  VesselWall wall = VesselWall::Front;
+  double biteMm = 0.0;              ///< distance from the vessel's cut end along its axis (mm)
+};
+
+struct SceneEvent {
+  SceneEventKind kind = SceneEventKind::GrabTissue;
+  double time = 0.0;  ///< s
+  int step = 0;       ///< the step it happened in (0-based)
+  int hand = -1;      ///< 0 left, 1 right, -1 none
+  int index = -1;     ///< see the kind
+  int count = 0;      ///< see the kind
+  InputRejection rejection = InputRejection::NonFinite;  ///< InputRejected only
+};
+
+}  // namespace microsim::sim

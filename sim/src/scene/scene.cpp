@@ -1,0 +1,416 @@
+#include "microsim/sim/scene/scene.h"
+
+#include "microsim/sim/solve/state_hash.h"
+#include "microsim/sim/suture/suture_coupling.h"
+#include "microsim/sim/tools/scalpel.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace microsim::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Eigen::Isometry3d poseOf(const HandInput& h) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = h.orientation.normalized().toRotationMatrix();
+  pose.translation() = h.position;
+  return pose;
+}
+
+bool holdsJaws(Instrument i) { return i == Instrument::Forceps || i == Instrument::NeedleHolder; }
+
+}  // namespace
+
+// the tissue's collision trees, of the scene's volume type; each built only when needed
+class SceneCollision {
+ public:
+  virtual ~SceneCollision() = default;
+  virtual void maintain(const std::vector<int>& moved, const Points& x) = 0;
+  virtual void crossings(const SpringModel& tissue, const Points& x, const Vec3& p, const Vec3& q,
+                         std::vector<tools::FaceCrossing>& out) = 0;
+  virtual std::vector<int> cut(SpringModel& tissue, const Points& x, const ScalpelDef& def,
+                               const Eigen::Isometry3d* from, const Eigen::Isometry3d& to) = 0;
+};
+
+namespace {
+
+template <class Volume>
+class TreeCollision final : public SceneCollision {
+ public:
+  TreeCollision(const SpringModel& tissue, const Points& x, bool faces, bool links) {
+    if (faces && !tissue.triangles().empty()) pierce_.emplace(tissue, x);
+    if (links && tissue.linkCount() > 0) cutter_.emplace(tissue, x);
+  }
+  void maintain(const std::vector<int>& moved, const Points& x) override {
+    if (pierce_) pierce_->maintain(moved, x);
+    if (cutter_) cutter_->maintain(moved, x);
+  }
+  void crossings(const SpringModel& tissue, const Points& x, const Vec3& p, const Vec3& q,
+                 std::vector<tools::FaceCrossing>& out) override {
+    out.clear();
+    if (pierce_) pierce_->crossings(tissue, x, p, q, out);
+  }
+  std::vector<int> cut(SpringModel& tissue, const Points& x, const ScalpelDef& def,
+                       const Eigen::Isometry3d* from, const Eigen::Isometry3d& to) override {
+    return cutter_ ? cutter_->cut(tissue, x, def, from, to) : std::vector<int>{};
+  }
+
+ private:
+  std::optional<tools::PierceDetector<Volume>> pierce_;
+  std::optional<tools::LinkCutter<Volume>> cutter_;
+};
+
+}  // namespace
+
+Scene::Scene(SceneDef def, StepMode mode) : def_(std::move(def)), mode_(mode) {
+  SpringModel& tissue = def_.tissue.model;
+  if (!tissue.finalized()) tissue.finalize();
+  state_ = SpringState::atRest(tissue);
+  solver_ = makeSolver(def_.solver.name, def_.solver.params);
+  if (!solver_) solver_ = makeSolver("newton", def_.solver.params);
+
+  // the needle and its suture, laid out at the declared pose
+  if (def_.needle) {
+    suture_.emplace(def_.needle->suture);
+    suture_->gravity = tissue.gravity;
+    sutureState_ = suture::SutureState::laidOut(*suture_, def_.needle->pose);
+    sutureSolver_ = suture::makeSutureSolver(def_.needle->solver);
+    if (!sutureSolver_) sutureSolver_ = suture::makeSutureSolver("direct");
+    if (!tissue.triangles().empty())
+      surface_ = std::make_unique<suture::ContactSurface>(tissue.triangles(), state_.x);
+  }
+  for (int h = 0; h < kHandCount; ++h)
+    if (def_.forceps[static_cast<std::size_t>(h)])
+      forceps_[static_cast<std::size_t>(h)].emplace(*def_.forceps[static_cast<std::size_t>(h)]);
+
+  // trees only for the tools that need them
+  const bool faces = def_.needle.has_value();
+  const bool links = def_.scalpel.has_value();
+  if (faces || links) {
+    if (def_.tree == CollisionTree::Aabb)
+      collision_ = std::make_unique<TreeCollision<collide::Aabb>>(tissue, state_.x, faces, links);
+    else
+      collision_ = std::make_unique<TreeCollision<collide::Sphere>>(tissue, state_.x, faces, links);
+  }
+}
+
+Scene::~Scene() = default;
+
+void Scene::addEvent(SceneEventKind kind, int hand, int index, int count) {
+  SceneEvent e;
+  e.kind = kind;
+  e.time = time_;
+  e.step = steps_;
+  e.hand = hand;
+  e.index = index;
+  e.count = count;
+  events_.push_back(e);
+}
+
+void Scene::placeTools(const InputFrame& frame) {
+  for (int h = 0; h < kHandCount; ++h) {
+    const std::size_t hs = static_cast<std::size_t>(h);
+    const HandInput& in = frame.hands[hs];
+    bladeWas_[hs] = blade_[hs];
+    blade_[hs].reset();
+    auto& forceps = forceps_[hs];
+
+    // a lost hand leaves its tool where it was
+    if (!in.tracked) {
+      if (forceps) grabDue_[hs] = false;
+      if (in.instrument == Instrument::Scalpel) blade_[hs] = bladeWas_[hs];
+      continue;
+    }
+    const Eigen::Isometry3d pose = poseOf(in);
+    if (in.instrument == Instrument::Scalpel && def_.scalpel) blade_[hs] = pose;
+    if (!forceps) continue;
+
+    // jaws follow the hand; a hand that put the forceps down opens it
+    const double closure = holdsJaws(in.instrument) ? in.closure : 0.0;
+    bool released = false;
+    grabDue_[hs] = forceps->update(pose, closure, released);
+    if (released) {
+      if (forceps->holdsSuture()) addEvent(SceneEventKind::ReleaseSuture, h, forceps->heldSutureNode(), 1);
+      if (!forceps->heldNodes().empty())
+        addEvent(SceneEventKind::ReleaseTissue, h, -1, static_cast<int>(forceps->heldNodes().size()));
+      forceps->release();
+    }
+  }
+}
+
+void Scene::grab(int hand) {
+  tools::Forceps& f = *forceps_[static_cast<std::size_t>(hand)];
+  const auto tips = f.tips();
+  const double r = f.def().grabRadius;
+
+  // the suture first: the node nearest the tip segment's middle
+  if (suture_) {
+    const std::vector<int> near = tools::pointsNearSegment(sutureState_.x, tips[0], tips[1], r);
+    if (!near.empty()) {
+      const Vec3 mid = 0.5 * (tips[0] + tips[1]);
+      int best = near.front();
+      for (int i : near)
+        if ((sutureState_.x.col(i) - mid).squaredNorm() < (sutureState_.x.col(best) - mid).squaredNorm())
+          best = i;
+      const bool needle = suture_->needleLinks() > 0 && best <= suture_->swage();
+      f.holdSuture(best, sutureState_.x.col(best), needle, suture::needleRotation(*suture_, sutureState_.x));
+      addEvent(SceneEventKind::GripSuture, hand, best, 1);
+      return;
+    }
+  }
+
+  // then the free tissue nodes between the tips (a needle holder does not take tissue)
+  if (lastFrame_ && lastFrame_->hands[static_cast<std::size_t>(hand)].instrument == Instrument::NeedleHolder)
+    return;
+  const SpringModel& tissue = def_.tissue.model;
+  std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
+  for (int i = 0; i < tissue.nodeCount(); ++i) skip[static_cast<std::size_t>(i)] = tissue.isFixed(i) ? 1 : 0;
+  for (int h = 0; h < kHandCount; ++h)
+    if (h != hand && forceps_[static_cast<std::size_t>(h)])
+      for (int n : forceps_[static_cast<std::size_t>(h)]->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
+  const std::vector<int> nodes = tools::pointsNearSegment(state_.x, tips[0], tips[1], r, skip);
+  if (nodes.empty()) return;
+  f.holdTissue(nodes, state_.x);
+  addEvent(SceneEventKind::GrabTissue, hand, nodes.front(), static_cast<int>(nodes.size()));
+}
+
+void Scene::stepSuture() {
+  const SpringModel& tissue = def_.tissue.model;
+  suture::readPiercePoints(tissue, state_.x, sutureState_);
+  std::vector<suture::Grip> grips;
+  for (const auto& f : forceps_)
+    if (f)
+      if (auto g = f->grip()) grips.push_back(*g);
+  suture::SutureWorld world;
+  if (surface_) {
+    surface_->update(state_.x);
+    world.surface = surface_.get();
+  }
+  suture::SutureStepParams params = def_.needle->step;
+  params.dt = dt();
+  tipBefore_ = sutureState_.x.col(0);
+  tangentBefore_ = tools::needleTipTangent(*suture_, sutureState_.x);
+  const suture::SutureStepReport report = sutureSolver_->step(*suture_, sutureState_, grips, world, params);
+  tipAfter_ = sutureState_.x.col(0);
+  tangentAfter_ = tools::needleTipTangent(*suture_, sutureState_.x);
+  needleHeld_ = false;
+  for (const suture::Grip& g : grips) needleHeld_ = needleHeld_ || g.node <= suture_->swage();
+  for (const suture::SutureEvent& e : report.events) {
+    if (e.kind == suture::SutureEventKind::Break)
+      addEvent(SceneEventKind::SutureBreak, -1, e.link, 1);
+    else
+      addEvent(SceneEventKind::SuturePulledOut, -1, e.pierce, 1);
+  }
+  coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
+}
+
+PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const {
+  PierceEvent e;
+  e.time = time_;
+  e.entry = c.entry;
+  e.point = c.point;
+  e.face = c.face;
+  e.barycentric = c.barycentric;
+  e.tangent = tangent;
+  e.normal = c.normal;
+  e.angleDeg = tools::pierceAngleDeg(tangent, c.normal);
+
+  // which vessel, which surface, which wall, how far from the cut
+  const auto in = [&](const TriangleRange& r) { return c.face >= r.begin && c.face < r.end; };
+  for (std::size_t v = 0; v < def_.vessels.size(); ++v) {
+    const SceneVessel& vessel = def_.vessels[v];
+    VesselSurface surface = VesselSurface::NotAVessel;
+    if (in(vessel.outerSurface))
+      surface = VesselSurface::Outer;
+    else if (in(vessel.innerSurface))
+      surface = VesselSurface::Inner;
+    else if (in(vessel.cutEnd))
+      surface = VesselSurface::CutEnd;
+    else if (in(vessel.clampedEnd))
+      surface = VesselSurface::ClampedEnd;
+    if (surface == VesselSurface::NotAVessel) continue;
+    e.vessel = static_cast<int>(v);
+    e.end = vessel.end;
+    e.surface = surface;
+    const Vec3 axis = vessel.def.direction;
+    const Vec3 rel = c.point - vessel.def.origin;
+    const double along = rel.dot(axis);
+    const Vec3 radial = rel - along * axis;
+    e.wall = radial.dot(def_.camera.eye - c.point) >= 0.0 ? VesselWall::Front : VesselWall::Back;
+    e.biteMm = vessel.def.length - along;
+    break;
+  }
+  return e;
+}
+
+void Scene::applyCrossings() {
+  // only a held needle is driven through tissue (a loose one has nothing to push it)
+  if (!needleHeld_) return;
+  std::vector<tools::FaceCrossing> hits;
+  collision_->crossings(def_.tissue.model, state_.x, tipBefore_, tipAfter_, hits);
+  for (const tools::FaceCrossing& c : hits) {
+    // the tangent where the tip crossed, between its directions before and after the step
+    const Vec3 tangent = ((1.0 - c.t) * tangentBefore_ + c.t * tangentAfter_).normalized();
+    pierces_.push_back(describePierce(c, tangent));
+    addEvent(c.entry ? SceneEventKind::PierceEntry : SceneEventKind::PierceExit, -1,
+             static_cast<int>(pierces_.size()) - 1, 1);
+
+    // the suture runs through the wall here from now on
+    suture::Pierce p;
+    p.face = c.face;
+    p.barycentric = c.barycentric;
+    p.node = 0;
+    p.point = c.point;
+    sutureState_.pierces.push_back(p);
+  }
+}
+
+void Scene::assembleControls() {
+  const SpringModel& tissue = def_.tissue.model;
+  controls_ = SpringControls{};
+  std::vector<std::uint8_t> taken(static_cast<std::size_t>(tissue.nodeCount()), 0);
+  const auto add = [&](int node, const Vec3& target) {
+    if (tissue.isFixed(node) || taken[static_cast<std::size_t>(node)]) return;
+    taken[static_cast<std::size_t>(node)] = 1;
+    controls_.add(node, target);
+  };
+
+  // forceps first (a hand wins), then the scene's own controls, then the suture's pull
+  for (const auto& f : forceps_) {
+    if (!f || f->heldNodes().empty()) continue;
+    const Points targets = f->heldTargets();
+    for (std::size_t k = 0; k < f->heldNodes().size(); ++k)
+      add(f->heldNodes()[k], targets.col(static_cast<Eigen::Index>(k)));
+  }
+  const SpringControls& fixedControls = def_.tissue.controls;
+  for (int c = 0; c < fixedControls.size(); ++c)
+    add(fixedControls.nodes[static_cast<std::size_t>(c)], fixedControls.targets.col(c));
+  for (int c = 0; c < coupling_.size(); ++c)
+    add(coupling_.nodes[static_cast<std::size_t>(c)], coupling_.targets.col(c));
+}
+
+StepReport Scene::step(const InputFrame& in) {
+  const Clock::time_point start = Clock::now();
+  StepReport report;
+  const std::size_t eventsBefore = events_.size();
+  time_ += dt();
+
+  // input: a rejected frame is replaced by the last good one
+  InputRejection why{};
+  const double previous = lastFrame_ ? lastFrame_->time : -std::numeric_limits<double>::infinity();
+  InputFrame frame = in;
+  if (!validateSequence(in, previous, why)) {
+    report.inputRejected = true;
+    SceneEvent e;
+    e.kind = SceneEventKind::InputRejected;
+    e.time = time_;
+    e.step = steps_;
+    e.rejection = why;
+    events_.push_back(e);
+    frame = lastFrame_ ? *lastFrame_ : InputFrame{};
+    for (HandInput& h : frame.hands) h.tracked = h.tracked && lastFrame_.has_value();
+  }
+
+  // interactions: tools placed, grabs taken
+  Clock::time_point t0 = Clock::now();
+  placeTools(frame);
+  lastFrame_ = frame;
+  for (int h = 0; h < kHandCount; ++h)
+    if (grabDue_[static_cast<std::size_t>(h)]) grab(h);
+  report.times.interactions += secondsSince(t0);
+
+  // suture
+  t0 = Clock::now();
+  if (suture_) stepSuture();
+  report.times.suture = secondsSince(t0);
+
+  // collision: trees refit where the tissue moved, then the needle's and the blade's tests
+  t0 = Clock::now();
+  std::vector<int> cutLinks;
+  if (collision_) {
+    if (suture_) applyCrossings();
+    for (int h = 0; h < kHandCount; ++h) {
+      const std::size_t hs = static_cast<std::size_t>(h);
+      if (!blade_[hs]) continue;
+      const Eigen::Isometry3d* from = bladeWas_[hs] ? &*bladeWas_[hs] : nullptr;
+      std::vector<int> cut = collision_->cut(def_.tissue.model, state_.x, *def_.scalpel, from, *blade_[hs]);
+      if (!cut.empty()) addEvent(SceneEventKind::Cut, h, cut.front(), static_cast<int>(cut.size()));
+      cutLinks.insert(cutLinks.end(), cut.begin(), cut.end());
+    }
+  }
+  report.times.collision = secondsSince(t0);
+
+  // interactions: cuts invalidate the solver's caches; the tissue's controls
+  t0 = Clock::now();
+  if (!cutLinks.empty()) solver_->reset();
+  assembleControls();
+  report.times.interactions += secondsSince(t0);
+
+  // tissue
+  t0 = Clock::now();
+  SolveBudget budget;
+  budget.maxIterations = def_.solver.iterations;
+  budget.residualTolerance = def_.solver.tolerance;
+  if (mode_ == StepMode::RealTime)
+    budget.maxSeconds = std::max(0.0, def_.step.budgetMs * 1e-3 - secondsSince(start));
+  const Points before = collision_ ? state_.x : Points(3, 0);
+  report.tissue = solver_->solve(def_.tissue.model, state_, controls_, budget);
+  report.times.tissue = secondsSince(t0);
+
+  // the trees follow the nodes that moved (counted as collision time)
+  if (collision_) {
+    t0 = Clock::now();
+    std::vector<int> moved;
+    for (int i = 0; i < static_cast<int>(state_.x.cols()); ++i)
+      if (state_.x.col(i) != before.col(i)) moved.push_back(i);
+    collision_->maintain(moved, state_.x);
+    report.times.collision += secondsSince(t0);
+  }
+
+  ++steps_;
+  report.events = static_cast<int>(events_.size() - eventsBefore);
+  report.times.total = secondsSince(start);
+  return report;
+}
+
+std::uint64_t Scene::hash() const {
+  std::uint64_t h = stateHash(state_);
+  if (suture_) {
+    const auto& s = sutureState_;
+    h = fnv1a64(s.x.data(), sizeof(double) * static_cast<std::size_t>(s.x.size()), h);
+    h = fnv1a64(s.xPrev.data(), sizeof(double) * static_cast<std::size_t>(s.xPrev.size()), h);
+    h = fnv1a64(s.alive.data(), s.alive.size(), h);
+    for (const suture::Pierce& p : s.pierces) {
+      h = fnv1a64(&p.face, sizeof p.face, h);
+      h = fnv1a64(&p.node, sizeof p.node, h);
+      h = fnv1a64(p.barycentric.data(), sizeof(double) * 3, h);
+    }
+  }
+  for (const auto& f : forceps_) {
+    if (!f) continue;
+    const int node = f->heldSutureNode();
+    h = fnv1a64(&node, sizeof node, h);
+    h = fnv1a64(f->heldNodes().data(), sizeof(int) * f->heldNodes().size(), h);
+  }
+  const std::int64_t alive = def_.tissue.model.aliveLinkCount();
+  h = fnv1a64(&alive, sizeof alive, h);
+  return fnv1a64(&steps_, sizeof steps_, h);
+}
+
+std::variant<std::unique_ptr<Scene>, SceneError> openScene(const std::string& path, StepMode mode) {
+  SceneDefLoad load = loadSceneDef(path);
+  if (auto* e = std::get_if<SceneError>(&load)) return *e;
+  return std::make_unique<Scene>(std::move(std::get<SceneDef>(load)), mode);
+}
+
+}  // namespace microsim::sim

@@ -1,0 +1,144 @@
+#include "scene/scene_json_reader.h"
+
+#include "scene/spring_scene_locate.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <tuple>
+
+namespace microsim::sim::detail {
+
+bool JsonReader::fail(SceneErrorKind kind, const std::string& path) {
+  if (!error_) {
+    SceneError e;
+    e.kind = kind;
+    e.field = path;
+    error_ = e;
+  }
+  return false;
+}
+
+bool JsonReader::number(const json& v, const std::string& path, double& out) {
+  if (!v.is_number()) return fail(SceneErrorKind::WrongType, path);
+  out = v.get<double>();
+  if (!std::isfinite(out)) return fail(SceneErrorKind::NonFinite, path);
+  return true;
+}
+
+bool JsonReader::nonNegative(const json& v, const std::string& path, double& out) {
+  if (!number(v, path, out)) return false;
+  return out >= 0.0 || fail(SceneErrorKind::NegativeValue, path);
+}
+
+bool JsonReader::positive(const json& v, const std::string& path, double& out) {
+  if (!nonNegative(v, path, out)) return false;
+  return out > 0.0 || fail(SceneErrorKind::InvalidValue, path);
+}
+
+bool JsonReader::intAtLeast(const json& v, const std::string& path, long long least, int& out) {
+  long long x = 0;
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<unsigned long long>();
+    if (u > static_cast<unsigned long long>(INT_MAX)) return fail(SceneErrorKind::InvalidValue, path);
+    x = static_cast<long long>(u);
+  } else if (v.is_number_integer()) {
+    x = v.get<long long>();
+  } else {
+    return fail(SceneErrorKind::WrongType, path);
+  }
+  if (x < least || x > INT_MAX)
+    return fail(x < 0 ? SceneErrorKind::NegativeValue : SceneErrorKind::InvalidValue, path);
+  out = static_cast<int>(x);
+  return true;
+}
+
+bool JsonReader::boolean(const json& v, const std::string& path, bool& out) {
+  if (!v.is_boolean()) return fail(SceneErrorKind::WrongType, path);
+  out = v.get<bool>();
+  return true;
+}
+
+bool JsonReader::string(const json& v, const std::string& path, std::string& out) {
+  if (!v.is_string()) return fail(SceneErrorKind::WrongType, path);
+  out = v.get<std::string>();
+  return true;
+}
+
+bool JsonReader::vec3(const json& v, const std::string& path, Vec3& out) {
+  if (!v.is_array() || v.size() != 3) return fail(SceneErrorKind::WrongType, path);
+  for (int c = 0; c < 3; ++c)
+    if (!number(v[static_cast<std::size_t>(c)], index(path, static_cast<std::size_t>(c)), out[c]))
+      return false;
+  return true;
+}
+
+bool JsonReader::object(const json& v, const std::string& path,
+                        std::initializer_list<std::string_view> allowed) {
+  if (!v.is_object()) return fail(SceneErrorKind::WrongType, path);
+  for (const auto& item : v.items())
+    if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+      return fail(SceneErrorKind::UnknownField, key(path, item.key()));
+  return true;
+}
+
+const JsonReader::json* JsonReader::field(const json& obj, std::string_view name) {
+  const auto it = obj.find(std::string(name));
+  return it == obj.end() ? nullptr : &*it;
+}
+
+bool JsonReader::required(const json& obj, const std::string& path, std::string_view name,
+                          const json*& out) {
+  out = field(obj, name);
+  return out != nullptr || fail(SceneErrorKind::MissingField, key(path, name));
+}
+
+bool JsonReader::optNumber(const json& obj, const std::string& path, std::string_view name,
+                           double& out) {
+  const json* v = field(obj, name);
+  return !v || number(*v, key(path, name), out);
+}
+
+bool JsonReader::optNonNegative(const json& obj, const std::string& path, std::string_view name,
+                                double& out) {
+  const json* v = field(obj, name);
+  return !v || nonNegative(*v, key(path, name), out);
+}
+
+bool JsonReader::optPositive(const json& obj, const std::string& path, std::string_view name,
+                             double& out) {
+  const json* v = field(obj, name);
+  return !v || positive(*v, key(path, name), out);
+}
+
+bool JsonReader::optInt(const json& obj, const std::string& path, std::string_view name,
+                        long long least, int& out) {
+  const json* v = field(obj, name);
+  return !v || intAtLeast(*v, key(path, name), least, out);
+}
+
+bool JsonReader::optBool(const json& obj, const std::string& path, std::string_view name,
+                         bool& out) {
+  const json* v = field(obj, name);
+  return !v || boolean(*v, key(path, name), out);
+}
+
+bool JsonReader::optVec3(const json& obj, const std::string& path, std::string_view name,
+                         Vec3& out) {
+  const json* v = field(obj, name);
+  return !v || vec3(*v, key(path, name), out);
+}
+
+void locateSceneError(SceneError& e, std::string_view text) {
+  std::string path = e.field;
+  std::optional<std::size_t> offset = locateJsonPath(text, path);
+  while (!offset && !path.empty()) {
+    const std::size_t cut = path.find_last_of(".[");
+    path.resize(cut == std::string::npos ? 0 : cut);
+    offset = locateJsonPath(text, path);
+  }
+  e.offset = std::min(offset.value_or(0), text.size());
+  std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
+}
+
+}  // namespace microsim::sim::detail

@@ -1,0 +1,92 @@
+#include "microsim/sim/tools/needle.h"
+
+#include "microsim/sim/collide/segment_triangle.h"
+#include "microsim/sim/suture/suture_constraints.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace microsim::sim::tools {
+
+Vec3 faceNormal(const SpringModel& tissue, const Points& x, int face) {
+  const auto& t = tissue.triangles()[static_cast<std::size_t>(face)];
+  const Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+  const double len = n.norm();
+  return len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+}
+
+Vec3 needleTipTangent(const suture::SutureModel& model, const suture::Points& x) {
+  if (model.needleLinks() == 0 || model.def().needleShape == suture::NeedleShape::Straight) {
+    const Vec3 d = x.col(0) - x.col(1);
+    return d.normalized();
+  }
+  // the rest shape's tangent at node 0 points from the swage side towards the tip: −x
+  const Eigen::Matrix3d r = suture::needleRotation(model, x);
+  return (r * Vec3(-1.0, 0.0, 0.0)).normalized();
+}
+
+double pierceAngleDeg(const Vec3& tangent, const Vec3& normal) {
+  const double c = std::min(1.0, std::abs(tangent.normalized().dot(normal.normalized())));
+  return std::acos(c) * 180.0 / std::numbers::pi;
+}
+
+template <class Volume>
+PierceDetector<Volume>::PierceDetector(const SpringModel& tissue, const Points& x)
+    : tree_(collide::BvhTree<Volume>::overTriangles(tissue.triangles(), x)) {
+  pathX_.setZero();
+  const std::array<std::array<int, 2>, 1> segment{{{0, 1}}};
+  path_ = collide::BvhTree<Volume>::overSegments(segment, pathX_);
+}
+
+template <class Volume>
+void PierceDetector<Volume>::maintain(const std::vector<int>& moved, const Points& x) {
+  if (!moved.empty()) tree_.maintainVertices(moved, x);
+}
+
+template <class Volume>
+void PierceDetector<Volume>::crossings(const SpringModel& tissue, const Points& x, const Vec3& p,
+                                       const Vec3& q, std::vector<FaceCrossing>& out) {
+  out.clear();
+  if (tree_.empty() || p == q) return;
+  pathX_.col(0) = p;
+  pathX_.col(1) = q;
+  path_.refitAll(pathX_);
+  collide::allPairs(path_, pathX_, tree_, x, pairs_);
+
+  // exact crossings, then path order
+  for (const collide::FeaturePair& pair : pairs_) {
+    const auto& t = tissue.triangles()[static_cast<std::size_t>(pair.second)];
+    const auto hit = collide::intersectSegmentTriangle(p, q, x.col(t[0]), x.col(t[1]), x.col(t[2]));
+    if (!hit) continue;
+    FaceCrossing c;
+    c.face = pair.second;
+    c.t = hit->t;
+    c.point = hit->point;
+    c.barycentric = hit->barycentric;
+    c.normal = faceNormal(tissue, x, pair.second);
+    const double along = (q - p).dot(c.normal);
+    if (along == 0.0) continue;  // sliding within the face's plane crosses nothing
+    c.entry = along < 0.0;
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end(), [](const FaceCrossing& a, const FaceCrossing& b) {
+    return a.t != b.t ? a.t < b.t : a.face < b.face;
+  });
+
+  // one crossing through an edge or corner shared by faces of one surface
+  const double merge = 1e-9;
+  std::vector<FaceCrossing> unique;
+  for (const FaceCrossing& c : out) {
+    const bool duplicate = !unique.empty() && unique.back().entry == c.entry &&
+                           std::abs(unique.back().t - c.t) * (q - p).norm() <= merge &&
+                           unique.back().normal.dot(c.normal) > 0.0;
+    if (!duplicate) unique.push_back(c);
+  }
+  out.swap(unique);
+}
+
+template class PierceDetector<collide::Sphere>;
+template class PierceDetector<collide::Aabb>;
+
+}  // namespace microsim::sim::tools
