@@ -1,6 +1,7 @@
 #include "calibration/registration.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <algorithm>

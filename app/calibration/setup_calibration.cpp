@@ -1,6 +1,7 @@
 #include "calibration/setup_calibration.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include <cmath>
 

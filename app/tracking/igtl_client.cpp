@@ -112,6 +112,7 @@ class IgtlClient::Worker : public QObject {
       Q_EMIT owner_->connectedChanged(false);
       emitFrame(assembler_.lose(std::max(lastFrameTime_, now())));
     }
+    Q_EMIT owner_->linkDown();
     if (!config_.reconnect) return;
     retry_->start(backoffMs_);
     backoffMs_ = std::min(backoffMs_ * 2, config_.reconnectMaxMs);
@@ -150,9 +151,10 @@ class IgtlClient::Worker : public QObject {
     out_.clear();
   }
 
-  // source time mapped onto the client's clock; the offset is fixed per connection
+  // source time mapped onto the client's clock; the offset is fixed per connection and
+  // starts no earlier than the last frame, so frames never go back across reconnections
   double frameTime(double sourceTime, double receiveTime) {
-    if (!timeOffset_) timeOffset_ = receiveTime - sourceTime;
+    if (!timeOffset_) timeOffset_ = std::max(receiveTime, lastFrameTime_) - sourceTime;
     return sourceTime + *timeOffset_;
   }
 

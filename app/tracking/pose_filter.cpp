@@ -1,5 +1,7 @@
 #include "tracking/pose_filter.h"
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <limits>
 

@@ -52,6 +52,8 @@ class TrackerSource : public QObject {
   /// A message or pose was refused (already counted in status()).
   void rejected(microsim::tracking::Rejection reason);
   void connectedChanged(bool connected);
+  /// The link is down: a connection attempt failed or an open link closed (see status().lastError).
+  void linkDown();
 };
 
 }  // namespace microsim::tracking

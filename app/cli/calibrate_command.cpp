@@ -1,0 +1,224 @@
+// `microsim-cli calibrate pivot|register --input FILE [--json OUT]`: a calibration run
+// headless on recorded data.
+//
+// pivot input:
+//   {"poses": [[16 numbers: the tool → tracker 4 by 4 matrix, row-major, mm], ...],
+//    "min_poses": 8, "min_spread_deg": 15, "max_rms_mm": 0.5}      (thresholds optional)
+//   (the "last" arrays of `microsim-cli track --json` have this form)
+// pivot output:
+//   {"status": "ok", "tip_offset": [x, y, z] (tool frame, mm), "pivot": [x, y, z] (tracker
+//    frame, mm), "rms_mm", "max_mm", "spread_deg", "poses"}
+//
+// register input:
+//   {"fiducials": [{"tracker": [x, y, z], "scene": [x, y, z]}, ...],       (≥ 3, mm)
+//    "check_points": [{"tracker": [...], "scene": [...]}, ...],           (optional, for TRE)
+//    "scaling": false}                                                    (optional: similarity)
+// register output:
+//   {"status": "ok", "matrix": [16 numbers, tracker → scene, row-major], "scale",
+//    "fre_rms_mm", "fre_max_mm", "fiducial_errors_mm": [...], "tre_rms_mm", "tre_max_mm",
+//    "check_errors_mm": [...], "check_points"}
+//
+// Exit code 0 when the status is "ok", 1 otherwise (the JSON is still written), 2 on usage.
+#include "cli/commands.h"
+
+#include "calibration/pivot_calibration.h"
+#include "calibration/registration.h"
+
+#include <QCommandLineParser>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <vector>
+
+namespace microsim::cli {
+
+namespace {
+
+using calibration::PivotStatus;
+using calibration::RegistrationStatus;
+
+const char* pivotStatusKey(PivotStatus s) {
+  switch (s) {
+    case PivotStatus::Ok: return "ok";
+    case PivotStatus::TooFewPoses: return "too_few_poses";
+    case PivotStatus::NonFinite: return "non_finite";
+    case PivotStatus::InsufficientSpread: return "insufficient_spread";
+    case PivotStatus::RmsAboveThreshold: return "rms_above_threshold";
+  }
+  return "unknown";
+}
+
+const char* registrationStatusKey(RegistrationStatus s) {
+  switch (s) {
+    case RegistrationStatus::Ok: return "ok";
+    case RegistrationStatus::TooFewFiducials: return "too_few_fiducials";
+    case RegistrationStatus::SizeMismatch: return "size_mismatch";
+    case RegistrationStatus::NonFinite: return "non_finite";
+    case RegistrationStatus::Collinear: return "collinear";
+  }
+  return "unknown";
+}
+
+QJsonArray toJson(const Eigen::Vector3d& v) { return QJsonArray{v.x(), v.y(), v.z()}; }
+
+QJsonArray toJson(const std::vector<double>& v) {
+  QJsonArray a;
+  for (double x : v) a.append(x);
+  return a;
+}
+
+bool readVector3(const QJsonValue& value, Eigen::Vector3d& out) {
+  const QJsonArray a = value.toArray();
+  if (a.size() != 3) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (!a.at(i).isDouble()) return false;
+    out(i) = a.at(i).toDouble();
+  }
+  return true;
+}
+
+// [{"tracker": [..], "scene": [..]}, ...] into two 3 by N matrices
+bool readPairs(const QJsonArray& pairs, Eigen::Matrix3Xd& tracker, Eigen::Matrix3Xd& scene) {
+  tracker.resize(3, pairs.size());
+  scene.resize(3, pairs.size());
+  for (qsizetype i = 0; i < pairs.size(); ++i) {
+    const QJsonObject o = pairs.at(i).toObject();
+    Eigen::Vector3d a, b;
+    if (!readVector3(o.value(QStringLiteral("tracker")), a) || !readVector3(o.value(QStringLiteral("scene")), b)) return false;
+    tracker.col(i) = a;
+    scene.col(i) = b;
+  }
+  return true;
+}
+
+QJsonObject runPivot(const QJsonObject& in, int& exitCode, QString& error) {
+  std::vector<Eigen::Isometry3d> poses;
+  for (const QJsonValue& v : in.value(QStringLiteral("poses")).toArray()) {
+    const QJsonArray a = v.toArray();
+    if (a.size() != 16) {
+      error = Cli::tr("each pose must be 16 numbers (a 4 by 4 matrix, row-major)");
+      return {};
+    }
+    Eigen::Matrix4d m;
+    for (int k = 0; k < 16; ++k) m(k / 4, k % 4) = a.at(k).toDouble();
+    poses.emplace_back(m);
+  }
+  calibration::PivotOptions options;
+  options.minPoses = in.value(QStringLiteral("min_poses")).toInt(options.minPoses);
+  options.minSpreadDeg = in.value(QStringLiteral("min_spread_deg")).toDouble(options.minSpreadDeg);
+  options.maxRms = in.value(QStringLiteral("max_rms_mm")).toDouble(options.maxRms);
+
+  const calibration::PivotResult r = calibration::pivotCalibration(poses, options);
+  exitCode = r.accepted() ? kExitOk : kExitFailure;
+  return QJsonObject{{QStringLiteral("status"), QLatin1String(pivotStatusKey(r.status))},
+                     {QStringLiteral("tip_offset"), toJson(r.tipOffset)},
+                     {QStringLiteral("pivot"), toJson(r.pivot)},
+                     {QStringLiteral("rms_mm"), r.rmsError},
+                     {QStringLiteral("max_mm"), r.maxError},
+                     {QStringLiteral("spread_deg"), r.spreadDeg},
+                     {QStringLiteral("poses"), r.poseCount}};
+}
+
+QJsonObject runRegister(const QJsonObject& in, int& exitCode, QString& error) {
+  Eigen::Matrix3Xd tracker, scene, checkTracker, checkScene;
+  if (!readPairs(in.value(QStringLiteral("fiducials")).toArray(), tracker, scene) ||
+      !readPairs(in.value(QStringLiteral("check_points")).toArray(), checkTracker, checkScene)) {
+    error = Cli::tr("each fiducial and check point needs \"tracker\" and \"scene\" as [x, y, z]");
+    return {};
+  }
+  const calibration::RegistrationResult r = calibration::registerPoints(
+      tracker, scene, checkTracker, checkScene, in.value(QStringLiteral("scaling")).toBool(false));
+  exitCode = r.ok() ? kExitOk : kExitFailure;
+  QJsonArray matrix;
+  for (int k = 0; k < 16; ++k) matrix.append(r.transform(k / 4, k % 4));
+  return QJsonObject{{QStringLiteral("status"), QLatin1String(registrationStatusKey(r.status))},
+                     {QStringLiteral("matrix"), matrix},
+                     {QStringLiteral("scale"), r.scale},
+                     {QStringLiteral("fre_rms_mm"), r.freRms},
+                     {QStringLiteral("fre_max_mm"), r.freMax},
+                     {QStringLiteral("fiducial_errors_mm"), toJson(r.fiducialErrors)},
+                     {QStringLiteral("tre_rms_mm"), r.treRms},
+                     {QStringLiteral("tre_max_mm"), r.treMax},
+                     {QStringLiteral("check_errors_mm"), toJson(r.checkErrors)},
+                     {QStringLiteral("check_points"), r.checkCount}};
+}
+
+}  // namespace
+
+int runCalibrate(const QStringList& args, Streams& io) {
+  QCommandLineParser parser;
+  const QCommandLineOption input(QStringLiteral("input"), Cli::tr("Read the poses or points from the JSON <file>."),
+                                 QStringLiteral("file"));
+  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the result as JSON to <file>."), QStringLiteral("file"));
+  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
+  parser.addOptions({input, json, help});
+  parser.addPositionalArgument(QStringLiteral("kind"), Cli::tr("pivot or register"));
+  if (!parser.parse(QStringList{QStringLiteral("calibrate")} + args)) {
+    io.err << "microsim-cli calibrate: " << parser.errorText() << '\n';
+    return kExitUsage;
+  }
+  if (parser.isSet(help)) {
+    io.out << Cli::tr("Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]") << "\n\n"
+           << parser.helpText().section(QLatin1Char('\n'), 2);
+    return kExitOk;
+  }
+  const QStringList kinds = parser.positionalArguments();
+  const QString kind = kinds.size() == 1 ? kinds.front() : QString();
+  if ((kind != QLatin1String("pivot") && kind != QLatin1String("register")) || !parser.isSet(input)) {
+    io.err << Cli::tr("microsim-cli calibrate: say pivot or register, and give --input FILE") << '\n';
+    return kExitUsage;
+  }
+
+  // the input document
+  QFile f(parser.value(input));
+  if (!f.open(QIODevice::ReadOnly)) {
+    io.err << Cli::tr("microsim-cli calibrate: cannot read %1").arg(parser.value(input)) << '\n';
+    return kExitFailure;
+  }
+  QJsonParseError parseError;
+  const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+  if (!doc.isObject()) {
+    io.err << Cli::tr("microsim-cli calibrate: %1 is not a JSON object: %2").arg(parser.value(input), parseError.errorString())
+           << '\n';
+    return kExitFailure;
+  }
+
+  // the calibration
+  int exitCode = kExitFailure;
+  QString error;
+  const QJsonObject result =
+      kind == QLatin1String("pivot") ? runPivot(doc.object(), exitCode, error) : runRegister(doc.object(), exitCode, error);
+  if (!error.isEmpty()) {
+    io.err << "microsim-cli calibrate: " << error << '\n';
+    return kExitFailure;
+  }
+
+  // the table
+  for (auto it = result.begin(); it != result.end(); ++it) {
+    const QJsonValue v = it.value();
+    QString text;
+    if (v.isArray()) {
+      QStringList parts;
+      for (const QJsonValue& x : v.toArray()) parts << QString::number(x.toDouble(), 'g', 8);
+      text = parts.join(QLatin1Char(' '));
+    } else if (v.isString()) {
+      text = v.toString();
+    } else {
+      text = QString::number(v.toDouble(), 'g', 8);
+    }
+    io.out << it.key().leftJustified(20) << text << '\n';
+  }
+
+  if (parser.isSet(json)) {
+    QFile out(parser.value(json));
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate) || out.write(QJsonDocument(result).toJson()) < 0) {
+      io.err << Cli::tr("microsim-cli calibrate: cannot write %1").arg(parser.value(json)) << '\n';
+      return kExitFailure;
+    }
+  }
+  return exitCode;
+}
+
+}  // namespace microsim::cli
