@@ -317,9 +317,9 @@ class NewtonSolver final : public TissueSolver {
     double eta = params_.linearTolerance;
     if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
     PcgResult pcg;
-    if (m >= kMultigridNodes && (!growing || multigridFits(model))) {
+    if (m >= kMultigridNodes && (!growing || m == freeCount_ || multigridFits(model))) {
       // multigrid-preconditioned CG, the hierarchy kept while it serves (and not built
-      // for a region that is still growing)
+      // for a region that may still grow)
       if (!multigridFits(model)) buildMultigrid(model, x);
       pcg = solvePcg(system_, multigrid_, force_, direction_, eta, 300);
       if (pcg.iterations > kRebuildIterations || !pcg.ok) multigridRegion_.clear();
