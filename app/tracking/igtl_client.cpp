@@ -118,37 +118,44 @@ class IgtlClient::Worker : public QObject {
     backoffMs_ = std::min(backoffMs_ * 2, config_.reconnectMaxMs);
   }
 
-  // hands the decoder's output through the filter and the assembler
+  // hands the decoder's output, in stream order, through the filter and the assembler
   void deliver() {
     const double t = now();
-    for (Rejection r : out_.rejections) reject(r);
-    for (const RawPose& pose : out_.poses) {
-      if (const std::optional<Rejection> why = filter_.check(pose)) {
-        reject(*why);
-        continue;
+    for (const IgtlDecodeOutput::Item& item : out_.order) {
+      switch (item.kind) {
+        case IgtlDecodeOutput::Kind::Rejection: reject(out_.rejections[item.index]); break;
+        case IgtlDecodeOutput::Kind::Pose: acceptPose(out_.poses[item.index], t); break;
+        case IgtlDecodeOutput::Kind::Channel: acceptChannel(out_.channels[item.index], t); break;
       }
-      accepted_.push_back(t);
-      backoffMs_ = config_.reconnectInitialMs;
-      {
-        QMutexLocker lock(&shared_->mutex);
-        ++shared_->status.accepted;
-        while (!accepted_.empty() && accepted_.front() < t - 1.0) accepted_.pop_front();
-        shared_->status.rateHz = static_cast<double>(accepted_.size());
-      }
-      Q_EMIT owner_->poseAccepted(pose);
-      if (std::optional<sim::InputFrame> frame = assembler_.applyPose(pose, frameTime(pose.time, t)))
-        emitFrame(*frame);
-    }
-    for (const ChannelValue& value : out_.channels) {
-      if (const std::optional<Rejection> why = filter_.check(value)) {
-        reject(*why);
-        continue;
-      }
-      Q_EMIT owner_->channelAccepted(value);
-      if (std::optional<sim::InputFrame> frame = assembler_.applyChannel(value, frameTime(value.time, t)))
-        emitFrame(*frame);
     }
     out_.clear();
+  }
+
+  void acceptPose(const RawPose& pose, double t) {
+    if (const std::optional<Rejection> why = filter_.check(pose)) {
+      reject(*why);
+      return;
+    }
+    accepted_.push_back(t);
+    backoffMs_ = config_.reconnectInitialMs;
+    {
+      QMutexLocker lock(&shared_->mutex);
+      ++shared_->status.accepted;
+      while (!accepted_.empty() && accepted_.front() < t - 1.0) accepted_.pop_front();
+      shared_->status.rateHz = static_cast<double>(accepted_.size());
+    }
+    Q_EMIT owner_->poseAccepted(pose);
+    if (std::optional<sim::InputFrame> frame = assembler_.applyPose(pose, frameTime(pose.time, t))) emitFrame(*frame);
+  }
+
+  void acceptChannel(const ChannelValue& value, double t) {
+    if (const std::optional<Rejection> why = filter_.check(value)) {
+      reject(*why);
+      return;
+    }
+    Q_EMIT owner_->channelAccepted(value);
+    if (std::optional<sim::InputFrame> frame = assembler_.applyChannel(value, frameTime(value.time, t)))
+      emitFrame(*frame);
   }
 
   // source time mapped onto the client's clock; the offset is fixed per connection and

@@ -73,7 +73,7 @@ void IgtlDecoder::feed(std::span<const std::uint8_t> bytes, double receiveTime, 
 
     // garbage: count once, then slide byte by byte to the next plausible header
     if (!plausibleHeader(h, maxBodyBytes_)) {
-      if (!resyncing_) out.rejections.push_back(Rejection::BadHeader);
+      if (!resyncing_) out.add(Rejection::BadHeader);
       resyncing_ = true;
       ++start_;
       continue;
@@ -84,7 +84,7 @@ void IgtlDecoder::feed(std::span<const std::uint8_t> bytes, double receiveTime, 
     const std::uint8_t* body = head + kIgtlHeaderSize;
     const igtl_uint64 crc = crc64(const_cast<unsigned char*>(body), h.body_size, 0ULL);
     if (crc != h.crc)
-      out.rejections.push_back(Rejection::BadCrc);
+      out.add(Rejection::BadCrc);
     else
       decodeBody(head, body, h.body_size, receiveTime, out);
     start_ += kIgtlHeaderSize + static_cast<std::size_t>(h.body_size);
@@ -98,7 +98,7 @@ void IgtlDecoder::feed(std::span<const std::uint8_t> bytes, double receiveTime, 
 }
 
 void IgtlDecoder::endOfStream(IgtlDecodeOutput& out) {
-  if (buffered() > 0 && !resyncing_) out.rejections.push_back(Rejection::Truncated);
+  if (buffered() > 0 && !resyncing_) out.add(Rejection::Truncated);
   buffer_.clear();
   start_ = 0;
   resyncing_ = false;
@@ -113,13 +113,13 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
 
   if (type == "TRANSFORM") {
     if (size != IGTL_TRANSFORM_SIZE) {
-      out.rejections.push_back(Rejection::WrongBodySize);
+      out.add(Rejection::WrongBodySize);
       return;
     }
     igtl_float32 m[12];
     std::memcpy(m, body, sizeof(m));
     igtl_transform_convert_byte_order(m);
-    out.poses.push_back(RawPose{device, time, fromTransform(m), true});
+    out.add(RawPose{device, time, fromTransform(m), true});
     return;
   }
 
@@ -141,7 +141,7 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
       p.quaternion[3] = 1.0f;
       hasRotation = false;
     } else {
-      out.rejections.push_back(Rejection::WrongBodySize);
+      out.add(Rejection::WrongBodySize);
       return;
     }
     // the quaternion is not normalised: a non-unit one gives a non-orthonormal block
@@ -151,13 +151,13 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
         2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
         2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y);
     m.block<3, 1>(0, 3) << p.position[0], p.position[1], p.position[2];
-    out.poses.push_back(RawPose{device, time, m, hasRotation});
+    out.add(RawPose{device, time, m, hasRotation});
     return;
   }
 
   if (type == "TDATA") {
     if (size == 0 || size % IGTL_TDATA_ELEMENT_SIZE != 0) {
-      out.rejections.push_back(Rejection::WrongBodySize);
+      out.add(Rejection::WrongBodySize);
       return;
     }
     const auto n = static_cast<std::size_t>(size / IGTL_TDATA_ELEMENT_SIZE);
@@ -165,30 +165,30 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
     std::memcpy(elements.data(), body, static_cast<std::size_t>(size));
     igtl_tdata_convert_byte_order(elements.data(), static_cast<int>(n));
     for (const igtl_tdata_element& e : elements)
-      out.poses.push_back(RawPose{fieldString(e.name, IGTL_TDATA_LEN_NAME), time, fromTransform(e.transform),
+      out.add(RawPose{fieldString(e.name, IGTL_TDATA_LEN_NAME), time, fromTransform(e.transform),
                                   e.type != IGTL_TDATA_TYPE_3D});
     return;
   }
 
   if (type == "SENSOR") {
     if (size < IGTL_SENSOR_HEADER_SIZE + 8) {
-      out.rejections.push_back(Rejection::WrongBodySize);
+      out.add(Rejection::WrongBodySize);
       return;
     }
     igtl_sensor_header sh;
     std::memcpy(&sh, body, IGTL_SENSOR_HEADER_SIZE);
     if (sh.larray == 0 || size != IGTL_SENSOR_HEADER_SIZE + 8ull * sh.larray) {
-      out.rejections.push_back(Rejection::WrongBodySize);
+      out.add(Rejection::WrongBodySize);
       return;
     }
     std::vector<igtl_float64> values(sh.larray);
     std::memcpy(values.data(), body + IGTL_SENSOR_HEADER_SIZE, 8u * sh.larray);
     igtl_sensor_convert_byte_order(&sh, values.data());
-    out.channels.push_back(ChannelValue{device, time, values.front()});
+    out.add(ChannelValue{device, time, values.front()});
     return;
   }
 
-  out.rejections.push_back(Rejection::UnknownType);
+  out.add(Rejection::UnknownType);
 }
 
 std::vector<std::uint8_t> encodeIgtlHeader(const char* type, const std::string& device, std::uint64_t timestamp,

@@ -38,15 +38,37 @@ namespace microsim::tracking {
 
 inline constexpr int kIgtlHeaderSize = 58;
 
+/// What a feed produced. `order` keeps the stream order across the three lists, so a
+/// consumer can replay poses, channel values and refusals as they arrived.
 struct IgtlDecodeOutput {
+  enum class Kind : std::uint8_t { Pose, Channel, Rejection };
+  struct Item {
+    Kind kind;
+    std::size_t index;  ///< into poses, channels or rejections
+  };
+
   std::vector<RawPose> poses;
   std::vector<ChannelValue> channels;
   std::vector<Rejection> rejections;
+  std::vector<Item> order;
 
+  void add(RawPose p) {
+    order.push_back({Kind::Pose, poses.size()});
+    poses.push_back(std::move(p));
+  }
+  void add(ChannelValue v) {
+    order.push_back({Kind::Channel, channels.size()});
+    channels.push_back(std::move(v));
+  }
+  void add(Rejection r) {
+    order.push_back({Kind::Rejection, rejections.size()});
+    rejections.push_back(r);
+  }
   void clear() {
     poses.clear();
     channels.clear();
     rejections.clear();
+    order.clear();
   }
 };
 
