@@ -70,6 +70,10 @@ TEST(IgtlDecoder, ReadsTransformPositionTdataAndSensorFromTheLibrary) {
   ASSERT_EQ(out.channels.size(), 1u);
   EXPECT_EQ(out.channels[0], (ChannelValue{"Grip", 101.0, 42.5}));
   EXPECT_EQ(decoder.buffered(), 0u);
+  // the stream order survives across the lists
+  ASSERT_EQ(out.order.size(), 5u);
+  EXPECT_EQ(out.order[3].kind, IgtlDecodeOutput::Kind::Pose);
+  EXPECT_EQ(out.order[4].kind, IgtlDecodeOutput::Kind::Channel);
 }
 
 TEST(IgtlDecoder, PositionOnlyAndNoTimestamp) {
