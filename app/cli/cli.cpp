@@ -9,6 +9,7 @@ std::vector<Command> commands() {
       {QStringLiteral("solve"), Cli::tr("solve a spring network (scene file or lattice box)"), &runSolve},
       {QStringLiteral("export"), Cli::tr("export the spring network a scene builds"), &runExport},
       {QStringLiteral("bench"), Cli::tr("run a benchmark (beside the paper's figures)"), &runBench},
+      {QStringLiteral("run"), Cli::tr("run a scene on recorded or scripted input (hash, events, timings)"), &runRun},
       {QStringLiteral("track"), Cli::tr("record what an OpenIGTLink tracker sends"), &runTrack},
       {QStringLiteral("calibrate"), Cli::tr("pivot calibration or tracker-to-scene registration from a file"), &runCalibrate},
   };

@@ -7,6 +7,7 @@ namespace microsim::cli {
 int runSolve(const QStringList& args, Streams& io);
 int runExport(const QStringList& args, Streams& io);
 int runBench(const QStringList& args, Streams& io);
+int runRun(const QStringList& args, Streams& io);
 int runTrack(const QStringList& args, Streams& io);
 int runCalibrate(const QStringList& args, Streams& io);
 

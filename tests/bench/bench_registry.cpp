@@ -1,5 +1,6 @@
 #include "bench_report.h"
 #include "collision_bench.h"
+#include "scene_bench.h"
 #include "suture_bench.h"
 #include "tissue_benches.h"
 
@@ -13,6 +14,7 @@ const std::vector<BenchEntry>& benchRegistry() {
       {"speed-error", "time to 10/1/0.1 % error for every tissue solver, warm and cold", runSpeedError},
       {"suture", "suture step time and max stretch vs links (50-2000), ftl (paper) vs direct", runSuture},
       {"collision", "sphere/AABB trees: build, maintenance, query vs distance, against FCL", runCollision},
+      {"scene", "scene step time by stage (median, p99) over one full stitch", runScene},
   };
   return entries;
 }

@@ -47,7 +47,7 @@ TEST(SceneDef, TheAnastomosisSceneHasTwoVesselEndsTwoForcepsAndANeedle) {
   EXPECT_EQ(s.needle->suture.links, 60);
   EXPECT_FALSE(s.scalpel.has_value());
   EXPECT_EQ(s.tree, CollisionTree::Aabb);
-  EXPECT_EQ(s.solver.name, "newton");
+  EXPECT_EQ(s.solver.name, "qss");
   EXPECT_EQ(s.step.rateHz, 100.0);
 }
 

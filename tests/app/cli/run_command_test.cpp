@@ -1,0 +1,103 @@
+// `microsim-cli run` as a user runs it: the shipped stitch replays to the golden hash with its
+// four pierces; a recording made with --record replays to the same hash; damaged recordings
+// and broken scenes fail with a message naming the file, and no crash.
+#include "support/cli_runner.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using microsim::testing::CliRun;
+using microsim::testing::runCli;
+
+const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
+const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
+const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
+// tests/sim/scene/stitch_test.cpp holds the same value
+const QString kGolden = QStringLiteral("6a8cafe23749fa3d");
+
+QJsonObject readJson(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) return {};
+  return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+TEST(RunCommand, TheShippedStitchReplaysToTheGoldenHashWithFourPierces) {
+  QTemporaryDir dir;
+  const QString out = dir.filePath(QStringLiteral("run.json"));
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"),
+                           kStitch, QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.out.contains(kGolden)) << r.out.toStdString();
+  const QJsonObject doc = readJson(out);
+  EXPECT_EQ(doc.value(QStringLiteral("hash")).toString(), kGolden);
+  int pierces = 0;
+  for (const QJsonValue& v : doc.value(QStringLiteral("events")).toArray()) {
+    const QString kind = v.toObject().value(QStringLiteral("kind")).toString();
+    if (kind.startsWith(QStringLiteral("pierce-"))) {
+      ++pierces;
+      EXPECT_TRUE(v.toObject().value(QStringLiteral("pierce")).toObject().contains(QStringLiteral("angle_deg")));
+    }
+  }
+  EXPECT_EQ(pierces, 4);
+  for (const char* stage : {"collision", "tissue", "suture", "interactions", "total"})
+    EXPECT_TRUE(doc.value(QStringLiteral("timings_ms")).toObject().contains(QLatin1String(stage))) << stage;
+}
+
+TEST(RunCommand, ARecordedRunReplaysToTheSameHash) {
+  QTemporaryDir dir;
+  const QString rec = dir.filePath(QStringLiteral("a.msrec"));
+  const QString first = dir.filePath(QStringLiteral("first.json"));
+  const QString second = dir.filePath(QStringLiteral("second.json"));
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--script"),
+                     QStringLiteral("stitch"), QStringLiteral("--frames"), QStringLiteral("120"),
+                     QStringLiteral("--record"), rec, QStringLiteral("--json"), first});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), rec,
+              QStringLiteral("--json"), second});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_EQ(readJson(first).value(QStringLiteral("steps")).toInt(), 120);
+  EXPECT_EQ(readJson(first).value(QStringLiteral("hash")).toString(),
+            readJson(second).value(QStringLiteral("hash")).toString());
+}
+
+TEST(RunCommand, ADamagedRecordingFailsWithAClearMessage) {
+  QTemporaryDir dir;
+  QFile in(kStitch);
+  ASSERT_TRUE(in.open(QIODevice::ReadOnly));
+  QByteArray bytes = in.readAll();
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x40);
+  const QString damaged = dir.filePath(QStringLiteral("damaged.msrec"));
+  QFile out(damaged);
+  ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+  out.write(bytes);
+  out.close();
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), damaged});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(damaged)) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("damaged recording"))) << r.err.toStdString();
+}
+
+TEST(RunCommand, ABrokenSceneOrAMissingMeshNamesTheFileAndField) {
+  QTemporaryDir dir;
+  const QString scene = dir.filePath(QStringLiteral("s.json"));
+  QFile f(scene);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write("{\"objects\": [{\"type\": \"severed-vessel\"}],\n"
+          " \"tools\": {\"forceps\": [{\"hand\": \"left\", \"mesh\": \"missing.obj\"}]}}\n");
+  f.close();
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), scene});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(scene + QStringLiteral(":2:"))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("tools.forceps[0].mesh"))) << r.err.toStdString();
+  const CliRun usage = runCli({QStringLiteral("run")});
+  EXPECT_EQ(usage.exitCode, 2);
+}
+
+}  // namespace

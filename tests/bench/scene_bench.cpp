@@ -1,0 +1,89 @@
+// `bench scene`: per-frame step time, median and p99, split by stage (collision, tissue,
+// suture, interactions, total), over one full stitch: the shipped recording
+// resources/recordings/stitch.msrec on resources/scenes/anastomosis.json (two vessel ends,
+// two forceps, needle and suture), and the same scripted stitch on the ~10k-node fine vessel
+// pair (fine_anastomosis.json; left out by --quick). Deterministic stepping (iteration
+// limits, no clock in the solve), one core. Issue 6's targets: p99 ≤ 5 ms for the default
+// scene, ≤ 10 ms for the fine one.
+#include "scene_bench.h"
+
+#include "microsim/sim/scene/recording.h"
+#include "microsim/sim/scene/scene.h"
+#include "microsim/sim/scene/stitch_script.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace microsim::bench {
+
+namespace {
+
+const std::string kRoot = MICROSIM_SOURCE_DIR;
+
+double quantileMs(std::vector<double> s, double q) {
+  if (s.empty()) return 0.0;
+  std::sort(s.begin(), s.end());
+  const std::size_t i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(s.size()))) - 1;
+  return 1e3 * s[std::min(i, s.size() - 1)];
+}
+
+void runCase(const std::string& name, const std::string& sceneFile, bool shipped, BenchReport& report) {
+  sim::SceneDefLoad load = sim::loadSceneDef(kRoot + "/resources/scenes/" + sceneFile);
+  if (!std::holds_alternative<sim::SceneDef>(load)) return;
+  sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
+  sim::Recording rec;
+  if (!shipped || !sim::readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok())
+    rec = sim::scriptedStitch(def);
+  const int nodes = def.tissue.model.nodeCount();
+  sim::Scene scene(std::move(def));
+
+  std::array<std::vector<double>, 5> t;
+  for (const sim::InputFrame& f : rec.frames) {
+    const sim::StepReport r = scene.step(f);
+    t[0].push_back(r.times.collision);
+    t[1].push_back(r.times.tissue);
+    t[2].push_back(r.times.suture);
+    t[3].push_back(r.times.interactions);
+    t[4].push_back(r.times.total);
+  }
+  const char* stages[5] = {"collision", "tissue", "suture", "interactions", "total"};
+  const std::string label = name + " (" + std::to_string(nodes) + " nodes, " +
+                            std::to_string(rec.frames.size()) + " frames)";
+  for (int s = 0; s < 5; ++s) {
+    const auto& v = t[static_cast<std::size_t>(s)];
+    report.rows.push_back({"scene", label, std::string(stages[s]) + " median", quantileMs(v, 0.5), "ms", {}, {}, {}});
+    report.rows.push_back({"scene", label, std::string(stages[s]) + " p99", quantileMs(v, 0.99), "ms", {}, {}, {}});
+  }
+  report.rows.push_back({"scene", label, "pierce events", static_cast<double>(scene.pierces().size()), "events", {}, {}, {}});
+
+  // the step time along the stitch
+  BenchPlot plot;
+  plot.title = "scene step time over one stitch: " + name;
+  plot.xLabel = "frame";
+  plot.yLabel = "ms";
+  for (int s : {0, 1, 2, 4}) {
+    BenchCurve c;
+    c.label = stages[s];
+    for (std::size_t k = 0; k < t[static_cast<std::size_t>(s)].size(); ++k) {
+      c.x.push_back(static_cast<double>(k));
+      c.y.push_back(1e3 * t[static_cast<std::size_t>(s)][k]);
+    }
+    plot.curves.push_back(std::move(c));
+  }
+  report.plots.push_back(std::move(plot));
+}
+
+}  // namespace
+
+BenchReport runScene(const BenchOptions& options) {
+  BenchReport report;
+  runCase("two vessel ends", "anastomosis.json", true, report);
+  if (!options.quick) runCase("fine vessel ends", "fine_anastomosis.json", false, report);
+  return report;
+}
+
+}  // namespace microsim::bench
