@@ -55,7 +55,7 @@ class NewtonSolver final : public TissueSolver {
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
                     const SolveBudget& budgetIn) override {
-    Stopwatch clock;
+    Stopwatch clock(budgetIn.clock);
     SolveReport report;
     if (!validInput(model, state, controls)) {
       report.status = SolveStatus::InvalidInput;

@@ -16,7 +16,7 @@ class Rk4Solver final : public TissueSolver {
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
                     const SolveBudget& budget) override {
-    Stopwatch clock;
+    Stopwatch clock(budget.clock);
     SolveReport report;
     if (!validInput(model, state, controls)) {
       report.status = SolveStatus::InvalidInput;

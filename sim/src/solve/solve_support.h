@@ -5,6 +5,7 @@
 #include "microsim/sim/solve/solver.h"
 
 #include <chrono>
+#include <ctime>
 #include <vector>
 
 namespace microsim::sim::detail {
@@ -28,13 +29,21 @@ double maxStiffness(const SpringModel& model);
 
 class Stopwatch {
  public:
-  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
+  explicit Stopwatch(BudgetClock clock = BudgetClock::Wall) : clock_(clock), start_(now()) {}
+  double seconds() const { return now() - start_; }
 
  private:
-  std::chrono::steady_clock::time_point start_;
+  double now() const {
+    if (clock_ == BudgetClock::ThreadCpu) {
+      timespec t{};
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+
+  BudgetClock clock_;
+  double start_;
 };
 
 /// Residuals above this multiple of the starting one (or of 1, whichever is larger) count

@@ -16,11 +16,19 @@
 
 namespace microsim::sim {
 
+/// The clock a time budget is measured on.
+enum class BudgetClock : std::uint8_t {
+  Wall,       ///< elapsed real time: what a frame deadline means
+  ThreadCpu,  ///< CPU time of the calling thread: what benchmarks use, so that other load on
+              ///< the machine does not change the figure (equal to Wall on an idle core)
+};
+
 /// When a solve stops. Whichever limit is reached first ends it.
 struct SolveBudget {
   int maxIterations = std::numeric_limits<int>::max();
   double maxSeconds = std::numeric_limits<double>::infinity();  ///< wall-clock (s)
   double residualTolerance = 0.0;  ///< stop once the relative residual is below this
+  BudgetClock clock = BudgetClock::Wall;  ///< what maxSeconds and SolveReport::seconds measure
 };
 
 enum class SolveStatus : std::uint8_t {
