@@ -330,6 +330,298 @@
         <source>Link stiffness of the --lattice box in g/s² (default 10).</source>
         <translation>Federsteifigkeit des --lattice-Würfels in g/s² (Vorgabe 10).</translation>
     </message>
+    <message>
+        <source>each pose must be 16 numbers (a 4 by 4 matrix, row-major)</source>
+        <translation>jede Pose muss aus 16 Zahlen bestehen (eine 4×4-Matrix, zeilenweise)</translation>
+    </message>
+    <message>
+        <source>each fiducial and check point needs "tracker" and "scene" as [x, y, z]</source>
+        <translation>jeder Referenz- und Prüfpunkt braucht „tracker“ und „scene“ als [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Read the poses or points from the JSON &lt;file&gt;.</source>
+        <translation>Die Posen oder Punkte aus der JSON-Datei &lt;file&gt; lesen.</translation>
+    </message>
+    <message>
+        <source>Write the result as JSON to &lt;file&gt;.</source>
+        <translation>Das Ergebnis als JSON in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>pivot or register</source>
+        <translation>pivot oder register</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]</source>
+        <translation>Aufruf: microsim-cli calibrate pivot|register --input DATEI [--json DATEI]</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
+        <translation>microsim-cli calibrate: pivot oder register angeben und --input DATEI nennen</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: cannot read %1</source>
+        <translation>microsim-cli calibrate: %1 kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: %1 is not a JSON object: %2</source>
+        <translation>microsim-cli calibrate: %1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: cannot write %1</source>
+        <translation>microsim-cli calibrate: %1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>run a scene on recorded or scripted input (hash, events, timings)</source>
+        <translation>eine Szene mit aufgezeichneter oder geskripteter Eingabe ausführen (Hash, Ereignisse, Zeiten)</translation>
+    </message>
+    <message>
+        <source>record what an OpenIGTLink tracker sends</source>
+        <translation>aufzeichnen, was ein OpenIGTLink-Tracker sendet</translation>
+    </message>
+    <message>
+        <source>pivot calibration or tracker-to-scene registration from a file</source>
+        <translation>Pivot-Kalibrierung oder Tracker-Szene-Registrierung aus einer Datei</translation>
+    </message>
+    <message numerus="yes">
+        <source>forceps grabs %n tissue node(s)</source>
+        <translation><numerusform>Pinzette greift %n Gewebeknoten</numerusform><numerusform>Pinzette greift %n Gewebeknoten</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>forceps releases %n tissue node(s)</source>
+        <translation><numerusform>Pinzette lässt %n Gewebeknoten los</numerusform><numerusform>Pinzette lässt %n Gewebeknoten los</numerusform></translation>
+    </message>
+    <message>
+        <source>forceps grips the suture at node %1</source>
+        <translation>Pinzette fasst den Faden an Knoten %1</translation>
+    </message>
+    <message>
+        <source>forceps lets go of the suture</source>
+        <translation>Pinzette lässt den Faden los</translation>
+    </message>
+    <message>
+        <source>needle enters a wall</source>
+        <translation>Nadel tritt in eine Wand ein</translation>
+    </message>
+    <message>
+        <source>needle leaves a wall</source>
+        <translation>Nadel tritt aus einer Wand aus</translation>
+    </message>
+    <message numerus="yes">
+        <source>scalpel cuts %n link(s)</source>
+        <translation><numerusform>Skalpell durchtrennt %n Feder</numerusform><numerusform>Skalpell durchtrennt %n Federn</numerusform></translation>
+    </message>
+    <message>
+        <source>suture breaks at link %1</source>
+        <translation>Faden reißt an Glied %1</translation>
+    </message>
+    <message>
+        <source>suture slips out of a pierce</source>
+        <translation>Faden rutscht aus einem Durchstich</translation>
+    </message>
+    <message>
+        <source>input frame rejected</source>
+        <translation>Eingabebild verworfen</translation>
+    </message>
+    <message>
+        <source>cannot open the recording</source>
+        <translation>die Aufzeichnung kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>cannot write the recording</source>
+        <translation>die Aufzeichnung kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>not a microsim recording</source>
+        <translation>keine microsim-Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>recording from a newer version</source>
+        <translation>Aufzeichnung einer neueren Version</translation>
+    </message>
+    <message>
+        <source>unfinished recording (no end record)</source>
+        <translation>unvollständige Aufzeichnung (kein Abschlusseintrag)</translation>
+    </message>
+    <message>
+        <source>damaged recording (checksum mismatch)</source>
+        <translation>beschädigte Aufzeichnung (Prüfsumme stimmt nicht)</translation>
+    </message>
+    <message>
+        <source>damaged recording (malformed frame)</source>
+        <translation>beschädigte Aufzeichnung (fehlerhaftes Bild)</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run.</source>
+        <translation>Die auszuführende Szene &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Replay the input frames of the recording &lt;file&gt;.</source>
+        <translation>Die Eingabebilder der Aufzeichnung &lt;file&gt; abspielen.</translation>
+    </message>
+    <message>
+        <source>Generate the input instead: 'stitch' (one scripted stitch).</source>
+        <translation>Stattdessen die Eingabe erzeugen: „stitch“ (eine geskriptete Naht).</translation>
+    </message>
+    <message>
+        <source>Record every input frame to &lt;file&gt;.</source>
+        <translation>Jedes Eingabebild in &lt;file&gt; aufzeichnen.</translation>
+    </message>
+    <message>
+        <source>Run &lt;n&gt; steps (default: every input frame, else 100).</source>
+        <translation>&lt;n&gt; Schritte ausführen (Vorgabe: jedes Eingabebild, sonst 100).</translation>
+    </message>
+    <message>
+        <source>Stop each tissue solve at the step budget (not reproducible).</source>
+        <translation>Jede Gewebelösung am Schrittbudget anhalten (nicht reproduzierbar).</translation>
+    </message>
+    <message>
+        <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
+        <translation>Hash, Ereignisse und Zeiten als JSON in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Aufruf: microsim-cli run --scene DATEI [--input AUFZ | --script stitch] [--record AUFZ] [--frames N] [--json AUS]</translation>
+    </message>
+    <message>
+        <source>--scene FILE is required</source>
+        <translation>--scene DATEI ist erforderlich</translation>
+    </message>
+    <message>
+        <source>--input and --script exclude each other</source>
+        <translation>--input und --script schließen einander aus</translation>
+    </message>
+    <message>
+        <source>unknown script '%1' (known: stitch)</source>
+        <translation>unbekanntes Skript „%1“ (bekannt: stitch)</translation>
+    </message>
+    <message>
+        <source>--frames wants a whole number ≥ 0, not '%1'</source>
+        <translation>--frames erwartet eine ganze Zahl ≥ 0, nicht „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>replaying its %n complete frame(s)</source>
+        <translation><numerusform>es wird sein %n vollständiges Bild abgespielt</numerusform><numerusform>es werden seine %n vollständigen Bilder abgespielt</numerusform></translation>
+    </message>
+    <message>
+        <source>(at byte %1)</source>
+        <translation>(bei Byte %1)</translation>
+    </message>
+    <message>
+        <source>the stitch script needs a severed vessel, a curved needle and two forceps</source>
+        <translation>das Nahtskript braucht ein durchtrenntes Gefäß, eine gebogene Nadel und zwei Pinzetten</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>Schritte</translation>
+    </message>
+    <message>
+        <source> of %1 s</source>
+        <translation> von %1 s</translation>
+    </message>
+    <message>
+        <source>state hash</source>
+        <translation>Zustands-Hash</translation>
+    </message>
+    <message>
+        <source>events</source>
+        <translation>Ereignisse</translation>
+    </message>
+    <message>
+        <source>end %1, angle %2°, bite %3 mm, at (%4, %5, %6)</source>
+        <translation>Ende %1, Winkel %2°, Stichabstand %3 mm, bei (%4, %5, %6)</translation>
+    </message>
+    <message>
+        <source>collision</source>
+        <translation>Kollision</translation>
+    </message>
+    <message>
+        <source>tissue</source>
+        <translation>Gewebe</translation>
+    </message>
+    <message>
+        <source>suture</source>
+        <translation>Faden</translation>
+    </message>
+    <message>
+        <source>interactions</source>
+        <translation>Interaktionen</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>gesamt</translation>
+    </message>
+    <message>
+        <source>step time (ms)</source>
+        <translation>Schrittzeit (ms)</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>p99</source>
+        <translation>p99</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>OpenIGTLink server to read, HOST:PORT (port 18944 by default).</source>
+        <translation>Zu lesender OpenIGTLink-Server, HOST:PORT (Vorgabe Port 18944).</translation>
+    </message>
+    <message>
+        <source>Record for &lt;seconds&gt; (default 10).</source>
+        <translation>&lt;seconds&gt; Sekunden lang aufzeichnen (Vorgabe 10).</translation>
+    </message>
+    <message>
+        <source>Write the record as JSON to &lt;file&gt;.</source>
+        <translation>Die Aufzeichnung als JSON in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>Stop when the server closes the link (no reconnection).</source>
+        <translation>Anhalten, wenn der Server die Verbindung schließt (keine Neuverbindung).</translation>
+    </message>
+    <message>
+        <source>Refuse poses moving faster than &lt;mm/s&gt; (default 2000).</source>
+        <translation>Posen verwerfen, die sich schneller als &lt;mm/s&gt; bewegen (Vorgabe 2000).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--once] [--max-speed MM_S]</source>
+        <translation>Aufruf: microsim-cli track --igtl HOST:PORT [--duration S] [--json DATEI] [--once] [--max-speed MM_S]</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
+        <translation>microsim-cli track: den Server als --igtl HOST:PORT angeben</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: --duration and --max-speed take positive numbers</source>
+        <translation>microsim-cli track: --duration und --max-speed erwarten positive Zahlen</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: could not connect to %1:%2: %3</source>
+        <translation>microsim-cli track: keine Verbindung zu %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 connection(s) to %2:%3</source>
+        <translation>%1 Verbindung(en) zu %2:%3</translation>
+    </message>
+    <message>
+        <source>device              received   rate (Hz)   last position (mm)</source>
+        <translation>Gerät               empfangen  Rate (Hz)   letzte Position (mm)</translation>
+    </message>
+    <message>
+        <source>rejected: %1</source>
+        <translation>verworfen: %1</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: cannot write %1</source>
+        <translation>microsim-cli track: %1 kann nicht geschrieben werden</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

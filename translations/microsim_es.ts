@@ -330,6 +330,298 @@
         <source>Link stiffness of the --lattice box in g/s² (default 10).</source>
         <translation>Rigidez de los muelles del cubo --lattice en g/s² (predeterminada 10).</translation>
     </message>
+    <message>
+        <source>each pose must be 16 numbers (a 4 by 4 matrix, row-major)</source>
+        <translation>cada pose debe tener 16 números (una matriz 4×4, por filas)</translation>
+    </message>
+    <message>
+        <source>each fiducial and check point needs "tracker" and "scene" as [x, y, z]</source>
+        <translation>cada punto fiducial y de control necesita «tracker» y «scene» como [x, y, z]</translation>
+    </message>
+    <message>
+        <source>Read the poses or points from the JSON &lt;file&gt;.</source>
+        <translation>Leer las poses o los puntos del JSON &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Write the result as JSON to &lt;file&gt;.</source>
+        <translation>Escribir el resultado como JSON en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>pivot or register</source>
+        <translation>pivot o register</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]</source>
+        <translation>Uso: microsim-cli calibrate pivot|register --input ARCHIVO [--json ARCHIVO]</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
+        <translation>microsim-cli calibrate: indique pivot o register, y --input ARCHIVO</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: cannot read %1</source>
+        <translation>microsim-cli calibrate: no se puede leer %1</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: %1 is not a JSON object: %2</source>
+        <translation>microsim-cli calibrate: %1 no es un objeto JSON: %2</translation>
+    </message>
+    <message>
+        <source>microsim-cli calibrate: cannot write %1</source>
+        <translation>microsim-cli calibrate: no se puede escribir %1</translation>
+    </message>
+    <message>
+        <source>run a scene on recorded or scripted input (hash, events, timings)</source>
+        <translation>ejecutar una escena con entrada grabada o programada (hash, eventos, tiempos)</translation>
+    </message>
+    <message>
+        <source>record what an OpenIGTLink tracker sends</source>
+        <translation>grabar lo que envía un localizador OpenIGTLink</translation>
+    </message>
+    <message>
+        <source>pivot calibration or tracker-to-scene registration from a file</source>
+        <translation>calibración de pivote o registro localizador-escena desde un archivo</translation>
+    </message>
+    <message numerus="yes">
+        <source>forceps grabs %n tissue node(s)</source>
+        <translation><numerusform>la pinza sujeta %n nodo de tejido</numerusform><numerusform>la pinza sujeta %n nodos de tejido</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>forceps releases %n tissue node(s)</source>
+        <translation><numerusform>la pinza suelta %n nodo de tejido</numerusform><numerusform>la pinza suelta %n nodos de tejido</numerusform></translation>
+    </message>
+    <message>
+        <source>forceps grips the suture at node %1</source>
+        <translation>la pinza sujeta la sutura en el nodo %1</translation>
+    </message>
+    <message>
+        <source>forceps lets go of the suture</source>
+        <translation>la pinza suelta la sutura</translation>
+    </message>
+    <message>
+        <source>needle enters a wall</source>
+        <translation>la aguja entra en una pared</translation>
+    </message>
+    <message>
+        <source>needle leaves a wall</source>
+        <translation>la aguja sale de una pared</translation>
+    </message>
+    <message numerus="yes">
+        <source>scalpel cuts %n link(s)</source>
+        <translation><numerusform>el bisturí corta %n muelle</numerusform><numerusform>el bisturí corta %n muelles</numerusform></translation>
+    </message>
+    <message>
+        <source>suture breaks at link %1</source>
+        <translation>la sutura se rompe en el eslabón %1</translation>
+    </message>
+    <message>
+        <source>suture slips out of a pierce</source>
+        <translation>la sutura se sale de una punción</translation>
+    </message>
+    <message>
+        <source>input frame rejected</source>
+        <translation>fotograma de entrada rechazado</translation>
+    </message>
+    <message>
+        <source>cannot open the recording</source>
+        <translation>no se puede abrir la grabación</translation>
+    </message>
+    <message>
+        <source>cannot write the recording</source>
+        <translation>no se puede escribir la grabación</translation>
+    </message>
+    <message>
+        <source>not a microsim recording</source>
+        <translation>no es una grabación de microsim</translation>
+    </message>
+    <message>
+        <source>recording from a newer version</source>
+        <translation>grabación de una versión más reciente</translation>
+    </message>
+    <message>
+        <source>unfinished recording (no end record)</source>
+        <translation>grabación incompleta (sin registro final)</translation>
+    </message>
+    <message>
+        <source>damaged recording (checksum mismatch)</source>
+        <translation>grabación dañada (la suma de comprobación no coincide)</translation>
+    </message>
+    <message>
+        <source>damaged recording (malformed frame)</source>
+        <translation>grabación dañada (fotograma mal formado)</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run.</source>
+        <translation>La escena &lt;file&gt; que se ejecutará.</translation>
+    </message>
+    <message>
+        <source>Replay the input frames of the recording &lt;file&gt;.</source>
+        <translation>Reproducir los fotogramas de entrada de la grabación &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Generate the input instead: 'stitch' (one scripted stitch).</source>
+        <translation>Generar la entrada en su lugar: «stitch» (un punto programado).</translation>
+    </message>
+    <message>
+        <source>Record every input frame to &lt;file&gt;.</source>
+        <translation>Grabar cada fotograma de entrada en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Run &lt;n&gt; steps (default: every input frame, else 100).</source>
+        <translation>Ejecutar &lt;n&gt; pasos (predeterminado: cada fotograma de entrada, si no 100).</translation>
+    </message>
+    <message>
+        <source>Stop each tissue solve at the step budget (not reproducible).</source>
+        <translation>Detener cada resolución del tejido en el presupuesto del paso (no reproducible).</translation>
+    </message>
+    <message>
+        <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
+        <translation>Escribir el hash, los eventos y los tiempos como JSON en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Uso: microsim-cli run --scene ARCHIVO [--input GRAB | --script stitch] [--record GRAB] [--frames N] [--json SALIDA]</translation>
+    </message>
+    <message>
+        <source>--scene FILE is required</source>
+        <translation>--scene ARCHIVO es obligatorio</translation>
+    </message>
+    <message>
+        <source>--input and --script exclude each other</source>
+        <translation>--input y --script se excluyen mutuamente</translation>
+    </message>
+    <message>
+        <source>unknown script '%1' (known: stitch)</source>
+        <translation>guion desconocido «%1» (conocido: stitch)</translation>
+    </message>
+    <message>
+        <source>--frames wants a whole number ≥ 0, not '%1'</source>
+        <translation>--frames espera un número entero ≥ 0, no «%1»</translation>
+    </message>
+    <message numerus="yes">
+        <source>replaying its %n complete frame(s)</source>
+        <translation><numerusform>se reproduce su %n fotograma completo</numerusform><numerusform>se reproducen sus %n fotogramas completos</numerusform></translation>
+    </message>
+    <message>
+        <source>(at byte %1)</source>
+        <translation>(en el byte %1)</translation>
+    </message>
+    <message>
+        <source>the stitch script needs a severed vessel, a curved needle and two forceps</source>
+        <translation>el guion del punto necesita un vaso seccionado, una aguja curva y dos pinzas</translation>
+    </message>
+    <message>
+        <source>scene</source>
+        <translation>escena</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>pasos</translation>
+    </message>
+    <message>
+        <source> of %1 s</source>
+        <translation> de %1 s</translation>
+    </message>
+    <message>
+        <source>state hash</source>
+        <translation>hash del estado</translation>
+    </message>
+    <message>
+        <source>events</source>
+        <translation>eventos</translation>
+    </message>
+    <message>
+        <source>end %1, angle %2°, bite %3 mm, at (%4, %5, %6)</source>
+        <translation>extremo %1, ángulo %2°, distancia al borde %3 mm, en (%4, %5, %6)</translation>
+    </message>
+    <message>
+        <source>collision</source>
+        <translation>colisión</translation>
+    </message>
+    <message>
+        <source>tissue</source>
+        <translation>tejido</translation>
+    </message>
+    <message>
+        <source>suture</source>
+        <translation>sutura</translation>
+    </message>
+    <message>
+        <source>interactions</source>
+        <translation>interacciones</translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation>total</translation>
+    </message>
+    <message>
+        <source>step time (ms)</source>
+        <translation>tiempo por paso (ms)</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>mediana</translation>
+    </message>
+    <message>
+        <source>p99</source>
+        <translation>p99</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>máx.</translation>
+    </message>
+    <message>
+        <source>OpenIGTLink server to read, HOST:PORT (port 18944 by default).</source>
+        <translation>Servidor OpenIGTLink que leer, HOST:PUERTO (puerto 18944 por defecto).</translation>
+    </message>
+    <message>
+        <source>Record for &lt;seconds&gt; (default 10).</source>
+        <translation>Grabar durante &lt;seconds&gt; segundos (predeterminado 10).</translation>
+    </message>
+    <message>
+        <source>Write the record as JSON to &lt;file&gt;.</source>
+        <translation>Escribir la grabación como JSON en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Stop when the server closes the link (no reconnection).</source>
+        <translation>Parar cuando el servidor cierre el enlace (sin reconexión).</translation>
+    </message>
+    <message>
+        <source>Refuse poses moving faster than &lt;mm/s&gt; (default 2000).</source>
+        <translation>Rechazar poses que se muevan más rápido que &lt;mm/s&gt; (predeterminado 2000).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--once] [--max-speed MM_S]</source>
+        <translation>Uso: microsim-cli track --igtl HOST:PUERTO [--duration S] [--json ARCHIVO] [--once] [--max-speed MM_S]</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
+        <translation>microsim-cli track: indique el servidor como --igtl HOST:PUERTO</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: --duration and --max-speed take positive numbers</source>
+        <translation>microsim-cli track: --duration y --max-speed esperan números positivos</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: could not connect to %1:%2: %3</source>
+        <translation>microsim-cli track: no se pudo conectar a %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 connection(s) to %2:%3</source>
+        <translation>%1 conexión(es) a %2:%3</translation>
+    </message>
+    <message>
+        <source>device              received   rate (Hz)   last position (mm)</source>
+        <translation>dispositivo         recibidas  tasa (Hz)   última posición (mm)</translation>
+    </message>
+    <message>
+        <source>rejected: %1</source>
+        <translation>rechazadas: %1</translation>
+    </message>
+    <message>
+        <source>microsim-cli track: cannot write %1</source>
+        <translation>microsim-cli track: no se puede escribir %1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Fills a Qt .ts file from a glossary (JSON: {context: {source: translation}}).
 
+A message with plural forms (%n) takes a list: one text per plural form of the language.
+
 Maintainers' tool, not part of the build: after `cmake --build build --target
 update_translations` adds new source texts, add their translations to
 translations/glossary_<lang>.json and run
@@ -24,7 +26,17 @@ def main(ts_path: str, glossary_path: str) -> int:
             source = message.find("source").text
             translation = message.find("translation")
             if source in table:
-                translation.text = table[source]
+                value = table[source]
+                if message.get("numerus") == "yes":
+                    # plural forms: the glossary gives a list, one entry per form of the language
+                    for child in list(translation):
+                        translation.remove(child)
+                    translation.text = None
+                    forms = value if isinstance(value, list) else [value]
+                    for form in forms:
+                        ET.SubElement(translation, "numerusform").text = form
+                else:
+                    translation.text = value
                 translation.attrib.pop("type", None)
             elif translation.get("type") == "unfinished":
                 missing += 1
