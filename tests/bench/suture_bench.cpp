@@ -2,9 +2,17 @@
 // follow-the-leader ("ftl", the peer) and the direct tridiagonal solver ("direct"), in four
 // cases: one grip moving the thread; two grips moving within the thread's slack; two grips
 // with a pierce between them that the thread slides through; and two grips with contacts
-// (draped over a cylinder surface, around a jaw capsule, self-contact on). The thread is
-// 0.1 mm per link (so 2000 links = 200 mm), no needle; each frame is one 10 ms step with the
-// default substeps. Times are wall-clock on one core, per frame, mean over the run.
+// (under gravity, draped over a cylinder surface, pressed by a jaw capsule, self-contact on).
+//
+// The thread is 0.1 mm per link (2000 links = 200 mm), no needle, laid at exact link lengths
+// in a shallow sag whose span is its length less 0.5 mm, so every link count has the same
+// slack. The hands move the same way for every link count, at hand speed: both grips follow
+// one path of amplitude 2 mm per second (peak ≈ 15 mm/s, 0.15 mm per frame), the second grip
+// also moves ±0.2 mm against the first (inside the slack: nothing breaks); in the sliding case
+// the first grip and the pierce (at the middle node) hold still while the second grip pulls
+// 0.4 mm out and back along the span each second (beyond its side's slack: the thread slides).
+// Each frame is one 10 ms step with the default step parameters. Times are wall-clock on one
+// core, per frame, mean over the run; the stretch is the largest over every frame.
 #include "suture_bench.h"
 
 #include "microsim/sim/suture/suture_solver.h"
@@ -20,7 +28,15 @@ using namespace microsim::sim::suture;
 
 namespace {
 
-enum class Case { OneGrip, TwoGrips, Sliding, Contacts };
+using Case = SutureBenchCase;
+
+constexpr double kLink = 0.1;           // mm per link
+constexpr double kSlack = 0.5;          // mm: length less span
+constexpr double kHand = 2.0;           // mm: amplitude of the common hand path
+constexpr double kRelative = 0.2;       // mm: second grip against the first
+constexpr double kPull = 0.4;           // mm: the sliding case's pull
+constexpr double kPeriod = 1.0;         // s: one cycle of every motion
+constexpr double kFrame = 0.01;         // s
 
 const char* caseName(Case c) {
   switch (c) {
@@ -32,15 +48,15 @@ const char* caseName(Case c) {
   return "";
 }
 
-// a triangle cylinder about the y axis under the thread's middle (radius 1 mm, normals out)
-ContactSurface supportCylinder(double halfLength) {
+// a triangle cylinder along y (radius 1 mm, y in [y0, y1], normals out) whose top is at `top`
+ContactSurface supportCylinder(double top, double y0, double y1) {
   const int segments = 32;
   Points x(3, 2 * segments);
   std::vector<std::array<int, 3>> tris;
   for (int j = 0; j < segments; ++j) {
     const double a = 2.0 * std::numbers::pi * j / segments;
-    x.col(j) = Vec3(std::cos(a), -halfLength, std::sin(a) - 1.02);
-    x.col(segments + j) = Vec3(std::cos(a), halfLength, std::sin(a) - 1.02);
+    x.col(j) = Vec3(std::cos(a), y0, std::sin(a) + top - 1.0);
+    x.col(segments + j) = Vec3(std::cos(a), y1, std::sin(a) + top - 1.0);
   }
   for (int j = 0; j < segments; ++j) {
     const int k = (j + 1) % segments;
@@ -50,67 +66,82 @@ ContactSurface supportCylinder(double halfLength) {
   return ContactSurface(std::move(tris), x);
 }
 
-struct Measure {
-  double microsPerStep = 0.0;
-  double maxStretch = 0.0;
-};
+// exact link lengths, tangent angle −θ0 cos(π s / L) in the xz plane, centred on x = 0; the
+// span is L·J0(θ0), and θ0 = 2√(slack/L) gives a span of L − slack to first order
+Points sagLayout(int links, double link, double slack) {
+  const double length = links * link;
+  const double theta0 = 2.0 * std::sqrt(slack / length);
+  Points x(3, links + 1);
+  x.col(0).setZero();
+  for (int i = 0; i < links; ++i) {
+    const double a = -theta0 * std::cos(std::numbers::pi * (i + 0.5) / links);
+    x.col(i + 1) = x.col(i) + link * Vec3(std::cos(a), 0.0, std::sin(a));
+  }
+  x.colwise() -= Vec3(0.5 * x(0, links), 0.0, 0.0);
+  return x;
+}
 
-Measure run(const std::string& solverName, Case c, int links, int frames) {
+// the common hand path at time t (s): amplitude kHand, one cycle per kPeriod
+Vec3 handPath(double t) {
+  const double phase = 2.0 * std::numbers::pi * t / kPeriod;
+  return kHand * Vec3(std::sin(phase), std::cos(phase) - 1.0, 0.3 * std::sin(2.0 * phase));
+}
+
+}  // namespace
+
+SutureBenchMeasure measureSutureCase(const std::string& solverName, Case c, int links, int frames) {
   SutureDef def;
   def.links = links;
   def.needleLinks = 0;
-  def.length = 0.1 * links;
-  const SutureModel model(def);
-  const double length = def.length;
-  // the thread along x, centred on the origin, slightly sagging (not degenerate)
+  def.length = kLink * links;
+  SutureModel model(def);
+  if (c == Case::Contacts) model.gravity = Vec3(0.0, 0.0, -9810.0);
   SutureState state = SutureState::laidOut(model);
-  for (int i = 0; i <= links; ++i) {
-    const double t = static_cast<double>(i) / links;
-    state.x.col(i) = Vec3((t - 0.5) * 0.9 * length, 0.0, -0.05 * length * std::sin(std::numbers::pi * t));
-  }
-  auto solver = makeSutureSolver(solverName);
-  // settle the laid-out chain onto exact lengths first (not timed)
-  const Grip settle[2] = {{0, Vec3(state.x.col(0))}, {links, Vec3(state.x.col(links))}};
-  SutureStepParams params;
-  params.projectionIterations = 200;
-  makeSutureSolver("direct")->step(model, state, settle, {}, params);
+  state.x = sagLayout(links, kLink, kSlack);
   state.xPrev = state.x;
+  const int middle = links / 2;
   if (c == Case::Sliding) {
     Pierce p;
     p.face = 0;
-    p.node = links / 2;
-    p.point = state.x.col(links / 2);
+    p.node = middle;
+    p.point = state.x.col(middle);
     state.pierces.push_back(p);
   }
-  const ContactSurface surface = supportCylinder(2.0);
+  // contacts: the cylinder just under the sag's lowest point, a jaw pressing a quarter along
+  const ContactSurface surface = supportCylinder(state.x(2, middle) - 0.005, -6.0, 2.0);
   SutureWorld world;
   if (c == Case::Contacts) {
     world.surface = &surface;
-    world.capsules.push_back({Vec3(-0.2 * length, -1, 0.05), Vec3(-0.2 * length, 1, 0.05), 0.1});
+    const Vec3 q = state.x.col(links / 4);
+    world.capsules.push_back({Vec3(q.x(), -6.0, q.z() + 0.06), Vec3(q.x(), 2.0, q.z() + 0.06), 0.1});
   }
+  auto solver = makeSutureSolver(solverName);
   const SutureStepParams stepParams;
 
   const Vec3 a0 = state.x.col(0);
   const Vec3 b0 = state.x.col(links);
-  Measure m;
+  SutureBenchMeasure m;
   double seconds = 0.0;
   for (int k = 1; k <= frames; ++k) {
-    const double phase = 2.0 * std::numbers::pi * k / 100.0;
-    const double hand = 0.02 * length;  // hand motion amplitude, mm
-    Grip grips[2] = {{0, a0 + hand * Vec3(std::sin(phase), std::cos(phase) - 1.0, 0.3 * std::sin(2 * phase))},
-                     {links, b0 + hand * Vec3(-std::sin(0.7 * phase), std::sin(phase), std::cos(phase) - 1.0)}};
-    if (c == Case::Sliding) grips[1].position = b0 + Vec3(0.05 * length * std::sin(phase), 0, 0.05 * length);
+    const double t = k * kFrame;
+    const double phase = 2.0 * std::numbers::pi * t / kPeriod;
+    const Vec3 relative =
+        kRelative * Vec3(std::sin(0.7 * phase), std::sin(phase), std::cos(phase) - 1.0);
+    Grip grips[2] = {{0, a0 + handPath(t)}, {links, b0 + handPath(t) + relative}};
+    if (c == Case::Sliding) {
+      grips[0].position = a0;
+      grips[1].position = b0 + Vec3(0.5 * kPull * (1.0 - std::cos(phase)), 0.0, 0.0);
+    }
     const std::span<const Grip> held(grips, c == Case::OneGrip ? 1 : 2);
     const auto start = std::chrono::steady_clock::now();
     const SutureStepReport r = solver->step(model, state, held, world, stepParams);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     m.maxStretch = std::max(m.maxStretch, r.maxStretch);
+    for (const SutureEvent& e : r.events) m.breaks += e.kind == SutureEventKind::Break ? 1 : 0;
   }
   m.microsPerStep = 1e6 * seconds / frames;
   return m;
 }
-
-}  // namespace
 
 BenchReport runSuture(const BenchOptions& options) {
   BenchReport report;
@@ -126,8 +157,8 @@ BenchReport runSuture(const BenchOptions& options) {
 
   for (const Case c : cases) {
     for (int n : sizes) {
-      const Measure ftl = run("ftl", c, n, frames);
-      const Measure direct = run("direct", c, n, frames);
+      const SutureBenchMeasure ftl = measureSutureCase("ftl", c, n, frames);
+      const SutureBenchMeasure direct = measureSutureCase("direct", c, n, frames);
       const std::string name = std::string(caseName(c)) + ", " + std::to_string(n) + " links";
       const auto row = [&](const std::string& solver, const char* metric, double value,
                            const char* unit, std::optional<double> peer) {

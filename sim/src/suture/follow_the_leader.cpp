@@ -58,3 +58,23 @@ void followTheLeader(const SutureModel& model, Points& x, const std::vector<std:
 }
 
 }  // namespace microsim::sim::suture
+
+namespace microsim::sim::suture {
+
+void followOutward(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+                   std::span<const Leader> leaders) {
+  const std::span<const double> rest(model.restLengths());
+  std::size_t begin = 0;
+  for (const Piece& piece : chainPieces(alive)) {
+    std::size_t end = begin;
+    while (end < leaders.size() && leaders[end].node <= piece.last) ++end;
+    if (end > begin) {
+      for (std::size_t k = begin; k < end; ++k) x.col(leaders[k].node) = leaders[k].position;
+      followChain(x, rest, leaders[begin].node, piece.first - 1);
+      followChain(x, rest, leaders[end - 1].node, piece.last + 1);
+    }
+    begin = end;
+  }
+}
+
+}  // namespace microsim::sim::suture

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace microsim::sim::suture {
 
@@ -24,6 +25,27 @@ void applyFriction(Eigen::Ref<Vec3> x, const Vec3& start, const Vec3& normal, do
 
 }  // namespace
 
+void ChainBlocks::update(const Points& x, const Points* xStart, double margin) {
+  const int nodes = static_cast<int>(x.cols());
+  const int count = nodes > 1 ? (nodes - 2) / kNodes + 1 : (nodes > 0 ? 1 : 0);
+  boxes.resize(static_cast<std::size_t>(count));
+  for (int b = 0; b < count; ++b) {
+    const int first = b * kNodes;
+    const int last = std::min(first + kNodes, nodes - 1);
+    Vec3 lo = x.col(first);
+    Vec3 hi = lo;
+    for (int i = first; i <= last; ++i) {
+      lo = lo.cwiseMin(x.col(i));
+      hi = hi.cwiseMax(x.col(i));
+      if (xStart) {
+        lo = lo.cwiseMin(xStart->col(i));
+        hi = hi.cwiseMax(xStart->col(i));
+      }
+    }
+    boxes[static_cast<std::size_t>(b)] = {lo.array() - margin, hi.array() + margin};
+  }
+}
+
 ContactSurface::ContactSurface(std::vector<std::array<int, 3>> triangles, const Points& x)
     : triangles_(std::move(triangles)), x_(x) {
   if (!triangles_.empty()) tree_ = collide::AabbTree::overTriangles(triangles_, x_);
@@ -41,13 +63,40 @@ bool ContactSurface::touching(int f, int g) const {
   return false;
 }
 
+namespace {
+
+bool boxesOverlap(const collide::Aabb& p, const collide::Aabb& q) {
+  return (p.lo.array() <= q.hi.array()).all() && (q.lo.array() <= p.hi.array()).all();
+}
+
+}  // namespace
+
 int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Capsule> capsules,
                            double radius, double friction, std::span<const std::uint8_t> movable,
-                           std::vector<std::uint8_t>& touched) {
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch) {
+  if (capsules.empty()) return 0;
+  ChainBlocks local;
+  ChainBlocks& blocks = scratch ? *scratch : local;
+  blocks.update(x, &xStart, radius);
   int count = 0;
-  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+  const Eigen::Index nodes = x.cols();
+  for (int b = 0; b < blocks.count(); ++b) {
+    // the capsules this block's swept box reaches
+    std::uint32_t reached = 0;
+    for (std::size_t k = 0; k < capsules.size() && k < 32; ++k) {
+      const Capsule& c = capsules[k];
+      const collide::Aabb box{c.a.cwiseMin(c.b).array() - c.radius, c.a.cwiseMax(c.b).array() + c.radius};
+      if (boxesOverlap(box, blocks.boxes[static_cast<std::size_t>(b)])) reached |= 1u << k;
+    }
+    if (capsules.size() > 32) reached = ~0u;
+    if (reached == 0) continue;
+    const Eigen::Index first = ChainBlocks::firstNode(b);
+    const Eigen::Index end = std::min<Eigen::Index>(first + ChainBlocks::kNodes, nodes);
+  for (Eigen::Index i = first; i < end; ++i) {
     if (!movable[static_cast<std::size_t>(i)]) continue;
-    for (const Capsule& c : capsules) {
+    for (std::size_t k = 0; k < capsules.size(); ++k) {
+      if (k < 32 && !(reached & (1u << k))) continue;
+      const Capsule& c = capsules[k];
       // closest point of the axis, push out along the radial direction
       const Vec3 p = x.col(i);
       const double t = collide::closestParameterOnSegment(p, c.a, c.b);
@@ -67,22 +116,32 @@ int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Caps
       ++count;
     }
   }
+  }
   return count;
 }
 
 int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface& surface,
                            double radius, double friction, std::span<const std::uint8_t> movable,
                            std::span<const ContactExemption> exemptions,
-                           std::vector<std::uint8_t>& touched) {
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch) {
   if (surface.empty()) return 0;
   const collide::AabbTree& tree = surface.tree();
   const Points& sx = surface.positions();
   const auto& tris = surface.triangles();
+  ChainBlocks local;
+  ChainBlocks& blocks = scratch ? *scratch : local;
+  blocks.update(x, &xStart, radius);
   std::vector<int> stack;
   std::vector<int> faces;
   int count = 0;
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     if (!movable[static_cast<std::size_t>(i)]) continue;
+    // blocks whose swept box misses the surface's root box
+    const std::size_t block = static_cast<std::size_t>(i / ChainBlocks::kNodes);
+    if (!boxesOverlap(blocks.boxes[block], tree.volume(0))) {
+      i = std::min<Eigen::Index>(x.cols(), static_cast<Eigen::Index>(block + 1) * ChainBlocks::kNodes) - 1;
+      continue;
+    }
 
     // faces near the node's substep motion (a sphere around it)
     const Vec3 start = xStart.col(i);
@@ -156,58 +215,132 @@ int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface
   return count;
 }
 
-SelfContact::SelfContact(int linkCount) {
-  segments_.resize(static_cast<std::size_t>(linkCount));
-  for (int i = 0; i < linkCount; ++i) segments_[static_cast<std::size_t>(i)] = {i, i + 1};
+SelfContact::SelfContact(int linkCount) : links_(linkCount) {}
+
+bool SelfContact::straight(const Points& x, int firstLink, int endLink, double gap, int skip) const {
+  const Vec3 chord = x.col(endLink) - x.col(firstLink);
+  const double length = chord.norm();
+  if (!(length > 0.0)) return false;
+  const Vec3 d = chord / length;
+  double least = std::numeric_limits<double>::infinity();
+  for (int k = firstLink; k < endLink; ++k) least = std::min(least, (x.col(k + 1) - x.col(k)).dot(d));
+  return least > 0.0 && (skip - 1) * least >= gap;
+}
+
+void SelfContact::collect(const Points& x, const Points& xStart, double radius, int skip,
+                          const std::vector<std::uint8_t>& alive) {
+  pairs_.clear();
+  const double gap = 2.0 * radius;
+  // an unbroken straight chain touches nothing (separate pieces may touch each other)
+  if (std::find(alive.begin(), alive.end(), std::uint8_t{0}) == alive.end()) {
+    bool all = true;
+    int first = 0;
+    for (int l = 0; l <= links_ && all; ++l) {
+      if (l < links_ && alive[static_cast<std::size_t>(l)]) continue;
+      if (l - first >= skip &&
+          !(straight(x, first, l, gap, skip) && straight(xStart, first, l, gap, skip)))
+        all = false;
+      first = l + 1;
+    }
+    if (all) return;
+  }
+
+  // boxes: per block of links and per link, grown by the radius
+  const int nodes = links_ + 1;
+  blocks_.update(x, &xStart, radius);
+  const int blockCount = blocks_.count();
+  linkBoxes_.resize(static_cast<std::size_t>(links_));
+  for (int l = 0; l < links_; ++l) {
+    const Vec3 lo = x.col(l).cwiseMin(x.col(l + 1)).cwiseMin(xStart.col(l)).cwiseMin(xStart.col(l + 1));
+    const Vec3 hi = x.col(l).cwiseMax(x.col(l + 1)).cwiseMax(xStart.col(l)).cwiseMax(xStart.col(l + 1));
+    linkBoxes_[static_cast<std::size_t>(l)] = {lo.array() - radius, hi.array() + radius};
+  }
+  const auto overlap = [](const collide::Aabb& p, const collide::Aabb& q) {
+    return (p.lo.array() <= q.hi.array()).all() && (q.lo.array() <= p.hi.array()).all();
+  };
+  const auto linkRange = [&](int block) {
+    const int first = ChainBlocks::firstNode(block);
+    return std::array<int, 2>{first, std::min(first + ChainBlocks::kNodes, nodes - 1)};
+  };
+  // a run [first, end) of intact links that is straight
+  const auto straightRun = [&](int first, int end) {
+    for (int l = first; l < end; ++l)
+      if (!alive[static_cast<std::size_t>(l)]) return false;
+    return straight(x, first, end, gap, skip) && straight(xStart, first, end, gap, skip);
+  };
+  const auto testLinks = [&](int i0, int i1, int j0, int j1) {
+    for (int i = i0; i < i1; ++i)
+      for (int j = std::max(j0, i + skip); j < j1; ++j)
+        if (overlap(linkBoxes_[static_cast<std::size_t>(i)], linkBoxes_[static_cast<std::size_t>(j)]))
+          pairs_.push_back({i, j});
+  };
+
+  // block against itself, then against every later block
+  for (int b = 0; b < blockCount; ++b) {
+    const auto [b0, b1] = linkRange(b);
+    if (b1 <= b0) continue;
+    if (!straightRun(b0, b1)) testLinks(b0, b1, b0, b1);
+    for (int c = b + 1; c < blockCount; ++c) {
+      const auto [c0, c1] = linkRange(c);
+      if (c1 <= c0 || !overlap(blocks_.boxes[static_cast<std::size_t>(b)],
+                               blocks_.boxes[static_cast<std::size_t>(c)]))
+        continue;
+      if (c == b + 1 && straightRun(b0, c1)) continue;
+      testLinks(b0, b1, c0, c1);
+    }
+  }
 }
 
 int SelfContact::project(Points& x, const Points& xStart, double radius, double friction, int skip,
                          std::span<const std::uint8_t> movable,
                          const std::vector<std::uint8_t>& alive) {
-  if (segments_.empty()) return 0;
-  if (tree_.empty()) {
-    tree_ = collide::AabbTree::overSegments(segments_, x);
-  } else {
-    tree_.refitAll(x);
-  }
+  if (links_ == 0) return 0;
   const double gap = 2.0 * radius;
-  collide::selfPairs(tree_, x, pairs_, gap);
+  collect(x, xStart, radius, skip, alive);
 
   int count = 0;
-  for (const collide::FeaturePair& pair : pairs_) {
-    const int i = pair.first;
-    const int j = pair.second;
-    if (std::abs(j - i) < skip || !alive[static_cast<std::size_t>(i)] ||
-        !alive[static_cast<std::size_t>(j)])
-      continue;
+  for (const auto& [i, j] : pairs_) {
+    if (!alive[static_cast<std::size_t>(i)] || !alive[static_cast<std::size_t>(j)]) continue;
 
-    // closest points now; the separating direction from the substep's start
-    const collide::SegmentClosest now =
+    // closest points now, the separating direction from the substep's start; a pair apart
+    // now but closer than the gap at its closest points of the start, carried to now, passed
+    // through itself within the substep (continuous check)
+    collide::SegmentClosest c =
         collide::closestSegmentSegment(x.col(i), x.col(i + 1), x.col(j), x.col(j + 1));
-    if (now.distance >= gap) continue;
-    const Vec3 p0 = (1.0 - now.s) * xStart.col(i) + now.s * xStart.col(i + 1);
-    const Vec3 q0 = (1.0 - now.t) * xStart.col(j) + now.t * xStart.col(j + 1);
-    Vec3 normal = q0 - p0;
-    if (normal.norm() <= 0.0) normal = now.onSecond - now.onFirst;
+    Vec3 normal;
+    double cap = 2.0 * gap;
+    if (c.distance < gap) {
+      normal = ((1.0 - c.t) * xStart.col(j) + c.t * xStart.col(j + 1)) -
+               ((1.0 - c.s) * xStart.col(i) + c.s * xStart.col(i + 1));
+      if (normal.norm() <= 0.0) normal = c.onSecond - c.onFirst;
+    } else {
+      c = collide::closestSegmentSegment(xStart.col(i), xStart.col(i + 1), xStart.col(j),
+                                         xStart.col(j + 1));
+      normal = c.onSecond - c.onFirst;
+      cap = std::numeric_limits<double>::infinity();
+    }
     if (normal.norm() <= 0.0) continue;
     normal.normalize();
-    const double along = (now.onSecond - now.onFirst).dot(normal);
+    const Vec3 p0 = (1.0 - c.s) * xStart.col(i) + c.s * xStart.col(i + 1);
+    const Vec3 q0 = (1.0 - c.t) * xStart.col(j) + c.t * xStart.col(j + 1);
+    const double along = (((1.0 - c.t) * x.col(j) + c.t * x.col(j + 1)) -
+                          ((1.0 - c.s) * x.col(i) + c.s * x.col(i + 1))).dot(normal);
     if (along >= gap) continue;
 
     // weights of the four nodes: barycentric share, zero for nodes that may not move
     const std::array<int, 4> node = {i, i + 1, j, j + 1};
-    const std::array<double, 4> share = {-(1.0 - now.s), -now.s, 1.0 - now.t, now.t};
+    const std::array<double, 4> share = {-(1.0 - c.s), -c.s, 1.0 - c.t, c.t};
     double denom = 0.0;
     for (int k = 0; k < 4; ++k)
       if (movable[static_cast<std::size_t>(node[k])]) denom += share[k] * share[k];
     if (denom <= 0.0) continue;
-    const double lambda = std::min(gap - along, 2.0 * gap) / denom;
+    const double lambda = std::min(gap - along, cap) / denom;
     for (int k = 0; k < 4; ++k)
       if (movable[static_cast<std::size_t>(node[k])]) x.col(node[k]) += share[k] * lambda * normal;
 
     // friction on the relative tangential motion of the two contact points
-    const Vec3 p1 = (1.0 - now.s) * x.col(i) + now.s * x.col(i + 1);
-    const Vec3 q1 = (1.0 - now.t) * x.col(j) + now.t * x.col(j + 1);
+    const Vec3 p1 = (1.0 - c.s) * x.col(i) + c.s * x.col(i + 1);
+    const Vec3 q1 = (1.0 - c.t) * x.col(j) + c.t * x.col(j + 1);
     const Vec3 rel = (q1 - q0) - (p1 - p0);
     const Vec3 tangential = rel - rel.dot(normal) * normal;
     const double slip = tangential.norm();

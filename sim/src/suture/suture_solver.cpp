@@ -18,7 +18,8 @@ bool validInput(const SutureModel& model, const SutureState& state, std::span<co
     return false;
   if (!finite(state.x) || !finite(state.xPrev)) return false;
   if (!(params.dt > 0.0) || !std::isfinite(params.dt) || params.substeps < 1 ||
-      params.iterations < 1)
+      params.iterations < 1 || !std::isfinite(params.maxSubstepMotion) ||
+      !std::isfinite(state.substep) || state.substep < 0.0)
     return false;
   for (const Grip& g : grips)
     if (g.node < 0 || g.node >= model.nodeCount() || !g.position.allFinite() ||
@@ -29,11 +30,10 @@ bool validInput(const SutureModel& model, const SutureState& state, std::span<co
   return true;
 }
 
-// leaders plus contact nodes (at their current positions), sorted by node
-std::vector<Leader> withContacts(std::span<const Leader> leaders, const Points& x,
-                                 const std::vector<std::uint8_t>& contact) {
-  std::vector<Leader> out;
-  out.reserve(leaders.size());
+// leaders plus contact nodes (at their current positions), sorted by node, into `out`
+void withContacts(std::span<const Leader> leaders, const Points& x,
+                  const std::vector<std::uint8_t>& contact, std::vector<Leader>& out) {
+  out.clear();
   std::size_t k = 0;
   for (int i = 0; i < static_cast<int>(contact.size()); ++i) {
     if (k < leaders.size() && leaders[k].node == i) {
@@ -42,7 +42,6 @@ std::vector<Leader> withContacts(std::span<const Leader> leaders, const Points& 
       out.push_back({i, x.col(i)});
     }
   }
-  return out;
 }
 
 // the paper's follow-the-leader; a piece nothing holds follows its first node
@@ -51,10 +50,11 @@ class FollowTheLeaderSolver final : public SutureSolver {
   std::string_view name() const override { return "ftl"; }
 
  protected:
-  void restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+  bool restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
                       std::span<const Leader> leaders, const std::vector<std::uint8_t>& contact,
-                      const SutureStepParams&) override {
-    std::vector<Leader> all = withContacts(leaders, x, contact);
+                      const SutureStepParams&, int) override {
+    std::vector<Leader>& all = all_;
+    withContacts(leaders, x, contact, all);
     for (const Piece& piece : chainPieces(alive)) {
       const bool held = std::any_of(all.begin(), all.end(), [&](const Leader& l) {
         return l.node >= piece.first && l.node <= piece.last;
@@ -63,7 +63,11 @@ class FollowTheLeaderSolver final : public SutureSolver {
     }
     std::sort(all.begin(), all.end(), [](const Leader& a, const Leader& b) { return a.node < b.node; });
     followTheLeader(model, x, alive, all);
+    return true;
   }
+
+ private:
+  std::vector<Leader> all_;
 };
 
 // follow-the-leader as predictor, exact lengths by the tridiagonal projection
@@ -72,11 +76,17 @@ class DirectSolver final : public SutureSolver {
   std::string_view name() const override { return "direct"; }
 
  protected:
-  void restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+  bool restoreLengths(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
                       std::span<const Leader> leaders, const std::vector<std::uint8_t>& contact,
-                      const SutureStepParams& params) override {
-    const std::vector<Leader> all = withContacts(leaders, x, contact);
-    followTheLeader(model, x, alive, all);
+                      const SutureStepParams& params, int round) override {
+    // after a round that did not converge (a fold the projection cannot undo), the paper's
+    // two averaged passes re-lay the spans between leaders
+    withContacts(leaders, x, contact, all_);
+    if (round > 0 && !converged_) {
+      followTheLeader(model, x, alive, all_);
+    } else {
+      followOutward(model, x, alive, all_);
+    }
 
     // weights: thread nodes 1, leaders 0, contact nodes scaled down
     const double unit = model.inverseMass(model.nodeCount() - 1);
@@ -85,16 +95,50 @@ class DirectSolver final : public SutureSolver {
       w_[static_cast<std::size_t>(i)] =
           model.inverseMass(i) / unit * (contact[static_cast<std::size_t>(i)] ? params.contactWeight : 1.0);
     for (const Leader& l : leaders) w_[static_cast<std::size_t>(l.node)] = 0.0;
-    projectChainLengths(x, model.restLengths(), w_, alive, params.projectionIterations,
-                        params.projectionTolerance, scratch_);
+    const ChainProjectionResult r = projectChainLengths(
+        x, model.restLengths(), w_, alive, params.projectionIterations, params.projectionTolerance,
+        scratch_);
+    converged_ = r.residual <= params.projectionTolerance;
+    return converged_;
+  }
+
+  void carry(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+             std::span<const Leader> leaders) override {
+    carrySpans(model, x, alive, leaders);
   }
 
  private:
+  std::vector<Leader> all_;
   std::vector<double> w_;
   ChainProjectionScratch scratch_;
+  bool converged_ = true;
 };
 
 }  // namespace
+
+void SutureSolver::carry(const SutureModel&, Points&, const std::vector<std::uint8_t>&,
+                         std::span<const Leader>) {}
+
+int SutureSolver::substepCount(const SutureModel& model, const SutureState& state,
+                               std::span<const Grip> grips, const SutureStepParams& params) const {
+  if (!(params.maxSubstepMotion > 0.0) || params.substeps == 1) return params.substeps;
+  // the grips' moves, the needle grip's turn, the fastest node's velocity over the step
+  double motion = 0.0;
+  for (const Grip& g : grips) {
+    motion = std::max(motion, (g.position - state.x.col(g.node)).norm());
+    if (g.oriented && model.needleLinks() > 0 && g.node <= model.swage()) {
+      const Eigen::AngleAxisd turn(g.rotation * needleRotation(model, state.x).transpose());
+      const double size = model.arc(0, model.swage());
+      motion = std::max(motion, std::abs(turn.angle()) * size);
+    }
+  }
+  if (state.substep > 0.0) {
+    const double fastest = (state.x - state.xPrev).colwise().squaredNorm().maxCoeff();
+    motion = std::max(motion, std::sqrt(fastest) * params.dt / state.substep);
+  }
+  const double wanted = std::ceil(motion / params.maxSubstepMotion);
+  return static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(params.substeps)));
+}
 
 SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state,
                                     std::span<const Grip> grips, const SutureWorld& world,
@@ -113,27 +157,30 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       std::max(2, static_cast<int>(std::ceil(2.0 * radius / model.rest(model.linkCount() - 1))) + 1);
 
   // where the grips start from: their nodes now, and the needle's pose
-  std::vector<Vec3> gripFrom(grips.size());
-  for (std::size_t g = 0; g < grips.size(); ++g) gripFrom[g] = state.x.col(grips[g].node);
+  gripFrom_.resize(grips.size());
+  for (std::size_t g = 0; g < grips.size(); ++g) gripFrom_[g] = state.x.col(grips[g].node);
   const Eigen::Quaterniond needleFrom(needleRotation(model, state.x));
 
-  std::vector<std::uint8_t> movable(static_cast<std::size_t>(nodes));
-  std::vector<std::uint8_t> movableSurface(static_cast<std::size_t>(nodes));
-  std::vector<std::uint8_t> contact(static_cast<std::size_t>(nodes));
-  std::vector<ContactExemption> exemptions;
-  std::vector<Grip> current(grips.begin(), grips.end());
-  const double h = params.dt / params.substeps;
+  movable_.resize(static_cast<std::size_t>(nodes));
+  movableSurface_.resize(static_cast<std::size_t>(nodes));
+  contact_.resize(static_cast<std::size_t>(nodes));
+  current_.assign(grips.begin(), grips.end());
+  const int substeps = substepCount(model, state, grips, params);
+  report.substeps = substeps;
+  const double h = params.dt / substeps;
   const double keep = std::exp(-model.def().drag * h);
 
-  for (int s = 0; s < params.substeps; ++s) {
-    const double f = static_cast<double>(s + 1) / params.substeps;
+  for (int s = 0; s < substeps; ++s) {
+    const double f = static_cast<double>(s + 1) / substeps;
 
-    // predict
+    // predict (the velocity spans the last substep, which may have been longer or shorter)
+    const double carried = keep * (state.substep > 0.0 ? h / state.substep : 1.0);
     xStart_ = state.x;
     const Vec3 fall = model.gravity * h * h;
-    state.x = state.x + keep * (state.x - state.xPrev);
+    state.x += carried * (state.x - state.xPrev);
     state.x.colwise() += fall;
     state.xPrev = xStart_;
+    state.substep = h;
 
     // leaders: interpolated grips (an oriented needle grip poses the needle), active pierces
     leaders_.clear();
@@ -141,8 +188,8 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     bool needleHeld = false;
     Eigen::Matrix3d needlePose = needleFrom.toRotationMatrix();
     for (std::size_t g = 0; g < grips.size(); ++g) {
-      current[g].position = (1.0 - f) * gripFrom[g] + f * grips[g].position;
-      leaders_.push_back({grips[g].node, current[g].position});
+      current_[g].position = (1.0 - f) * gripFrom_[g] + f * grips[g].position;
+      leaders_.push_back({grips[g].node, current_[g].position});
       if (grips[g].node <= swage && model.needleLinks() > 0 && !needleHeld) {
         needleHeld = true;
         needleAnchor = grips[g].node;
@@ -167,48 +214,54 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     leaders_.erase(std::unique(leaders_.begin(), leaders_.end(),
                                [](const Leader& a, const Leader& b) { return a.node == b.node; }),
                    leaders_.end());
+    carry(model, state.x, state.alive, leaders_);
 
     // who contacts may move; pierced faces do not push the thread passing through them
-    std::fill(movable.begin(), movable.end(), std::uint8_t{1});
-    for (const Leader& l : leaders_) movable[static_cast<std::size_t>(l.node)] = 0;
-    movableSurface = movable;
-    for (int k = 0; k < std::min(swage, nodes); ++k) movableSurface[static_cast<std::size_t>(k)] = 0;
-    exemptions.clear();
+    std::fill(movable_.begin(), movable_.end(), std::uint8_t{1});
+    for (const Leader& l : leaders_) movable_[static_cast<std::size_t>(l.node)] = 0;
+    movableSurface_ = movable_;
+    for (int k = 0; k < std::min(swage, nodes); ++k) movableSurface_[static_cast<std::size_t>(k)] = 0;
+    exemptions_.clear();
     for (const Pierce& p : state.pierces)
-      exemptions.push_back({std::max(0, p.node - 3), p.node + 3, p.face});
+      exemptions_.push_back({std::max(0, p.node - 3), p.node + 3, p.face});
 
     for (int it = 0; it < params.iterations; ++it) {
       // contacts: the nodes they correct become soft leaders of this round; friction acts on
       // the substep's predicted motion only (later rounds would undo the length corrections)
       const double muNow = it == 0 ? mu : 0.0;
-      std::fill(contact.begin(), contact.end(), std::uint8_t{0});
+      std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
       for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
-      report.contactNodes =
-          projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow, movable, contact);
+      report.contactNodes = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow,
+                                                   movable_, contact_, &blocks_);
       if (world.surface)
-        report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, muNow,
-                                                      movableSurface, exemptions, contact);
+        report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius,
+                                                      muNow, movableSurface_, exemptions_, contact_,
+                                                      &blocks_);
       report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, muNow, selfSkip,
-                                                            movable, state.alive)
+                                                            movable_, state.alive)
                                             : 0;
 
       // lengths, then the rigid needle
-      restoreLengths(model, state.x, state.alive, leaders_, contact, params);
-      if (model.needleLinks() > 0 && !needleHeld) rigidifyNeedle(model, state.x, swage);
+      const bool restored =
+          restoreLengths(model, state.x, state.alive, leaders_, contact_, params, it);
+      const bool needleFree = model.needleLinks() > 0 && !needleHeld;
+      if (needleFree) rigidifyNeedle(model, state.x, swage);
+      // nothing touched and nothing left to reconcile: another round would change nothing
+      if (report.contactNodes == 0 && report.selfPairs == 0 && restored && !needleFree) break;
     }
 
     // a last contact pass without friction (it would undo the length corrections): the substep
     // ends outside every obstacle, where the next one starts
-    std::fill(contact.begin(), contact.end(), std::uint8_t{0});
-    projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable, contact);
+    std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
+    projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable_, contact_, &blocks_);
     if (world.surface)
-      projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0, movableSurface,
-                             exemptions, contact);
+      projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0, movableSurface_,
+                             exemptions_, contact_, &blocks_);
 
     // slide through pierces, then break between grips
     state.time += h;
-    report.slides += slidePierces(model, state, current, params.slideTolerance, report.events);
-    if (const std::optional<int> link = findBreak(model, state, current)) {
+    report.slides += slidePierces(model, state, current_, params.slideTolerance, report.events);
+    if (const std::optional<int> link = findBreak(model, state, current_)) {
       state.alive[static_cast<std::size_t>(*link)] = 0;
       report.events.push_back({SutureEventKind::Break, *link, -1, state.time});
     }

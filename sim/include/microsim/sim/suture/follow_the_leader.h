@@ -50,4 +50,10 @@ void followTheLeader(Points& x, std::span<const double> rest, int first, int las
 void followTheLeader(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
                      std::span<const Leader> leaders);
 
+/// The outward half of followTheLeader: sets every leader's node and follows from the first
+/// and last leader of each piece to its ends; nodes between leaders keep their positions (the
+/// direct solver's predictor, see suture_solver.h).
+void followOutward(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+                   std::span<const Leader> leaders);
+
 }  // namespace microsim::sim::suture

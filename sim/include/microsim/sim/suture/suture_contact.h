@@ -19,8 +19,14 @@
 // Self-contact: link pairs closer than 2r are pushed apart along their separating direction
 // at xStart (evaluated at the current closest parameters), so a pair that ended a substep
 // crossed is pushed back to the side it came from; the push is capped at 4r. A pair that
-// passes fully through in one substep (more than 2r beyond) is not seen: substeps keep the
-// motion per substep below that at hand speeds.
+// passed fully through in one substep (apart again at its end) is caught continuously: the
+// closest points of the start, carried to the end, are closer than 2r along the start's
+// separating direction (or on its far side), and are pushed back by the whole amount.
+//
+// Cost. Every pass first boxes the chain in blocks of 16 nodes (ChainBlocks, swept over the
+// substep): a capsule or a surface only visits the nodes of the blocks its box reaches, and
+// self-contact skips runs of the chain that are too straight to touch themselves
+// (SelfContact). A thread that touches nothing costs O(#nodes) per pass.
 //
 // Faces point out of the material (the vessel generator's convention): "front" is the side the
 // normal points to. Units: millimetres; positions 3 by #nodes.
@@ -73,6 +79,18 @@ class ContactSurface {
   collide::AabbTree tree_;
 };
 
+/// Axis-aligned boxes over runs of kNodes consecutive nodes, each also enclosing the run's
+/// next node (so a block covers its links), swept from xStart to x and grown by a margin (mm):
+/// the broad phase of every contact pass. O(#nodes) to compute.
+struct ChainBlocks {
+  static constexpr int kNodes = 16;
+  std::vector<collide::Aabb> boxes;
+  /// Recomputes the boxes; with xStart null, boxes of x alone.
+  void update(const Points& x, const Points* xStart, double margin);
+  int count() const { return static_cast<int>(boxes.size()); }
+  static int firstNode(int block) { return block * kNodes; }
+};
+
 /// What a contact pass did.
 struct ContactCounts {
   int nodes = 0;  ///< node corrections
@@ -81,18 +99,27 @@ struct ContactCounts {
 
 /// Pushes movable nodes (movable[i] != 0) out of the capsules to distance `radius`, with
 /// friction μ against their motion since xStart. Marks corrected nodes in `touched`.
+/// `scratch` (optional) keeps the broad phase's boxes between calls.
 int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Capsule> capsules,
                            double radius, double friction, std::span<const std::uint8_t> movable,
-                           std::vector<std::uint8_t>& touched);
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch = nullptr);
 
 /// Pushes movable nodes out of the surface to distance `radius` and back across any face
 /// their substep motion crossed from its front, with friction μ. Marks corrected nodes.
 int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface& surface,
                            double radius, double friction, std::span<const std::uint8_t> movable,
                            std::span<const ContactExemption> exemptions,
-                           std::vector<std::uint8_t>& touched);
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch = nullptr);
 
-/// Self-contact through a tree over the chain's links (fixed topology, refit per call).
+/// Self-contact of the chain with itself, culled by straightness.
+///
+/// Broad phase: the links in blocks of ChainBlocks::kNodes, a box per block (swept over the
+/// substep, as are the links' boxes). A run of links
+/// whose every link advances along the run's chord d by at least m, (x_{k+1} − x_k)·d ≥ m > 0,
+/// cannot touch itself: for links i < j, every point of j lies at least (j − i − 1)·m further
+/// along d than every point of i, so pairs at least `skip` links apart are (skip − 1)·m ≥ 2r
+/// apart. A block, a pair of neighbouring blocks, an unbroken chain straight at both ends of
+/// the substep is skipped whole; other block pairs whose boxes (grown by r) overlap are tested link by link.
 class SelfContact {
  public:
   SelfContact() = default;
@@ -101,12 +128,18 @@ class SelfContact {
   /// the chain are ignored), with friction μ on their relative tangential motion.
   int project(Points& x, const Points& xStart, double radius, double friction, int skip,
               std::span<const std::uint8_t> movable, const std::vector<std::uint8_t>& alive);
-  int linkCount() const { return static_cast<int>(segments_.size()); }
+  int linkCount() const { return links_; }
 
  private:
-  std::vector<std::array<int, 2>> segments_;
-  collide::AabbTree tree_;
-  std::vector<collide::FeaturePair> pairs_;
+  bool straight(const Points& x, int firstLink, int endLink, double gap, int skip) const;
+  void collect(const Points& x, const Points& xStart, double radius, int skip,
+               const std::vector<std::uint8_t>& alive);
+
+  int links_ = 0;
+  ChainBlocks blocks_;
+  std::vector<collide::Aabb> linkBoxes_;
+  std::vector<std::uint8_t> straight_;  // per block, then per neighbouring pair
+  std::vector<std::array<int, 2>> pairs_;
 };
 
 }  // namespace microsim::sim::suture

@@ -110,6 +110,7 @@ struct SutureState {
   std::vector<std::uint8_t> alive;  ///< per link: 1 intact, 0 broken
   std::vector<Pierce> pierces;      ///< soft constraints through the tissue
   double time = 0.0;                ///< s
+  double substep = 0.0;             ///< s: the last substep's length (x − xPrev spans it); 0 before any
 
   /// The chain at rest, placed by `pose` (needle frame → world), at rest, nothing broken.
   static SutureState laidOut(const SutureModel& model,

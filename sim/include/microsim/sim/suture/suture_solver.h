@@ -1,25 +1,38 @@
 #pragma once
 // One step of the suture: the pipeline every thread solver shares, and the solvers.
 //
-// A step of dt is split into substeps of h = dt/S (hand motion is interpolated across them,
+// A step of dt is split into S substeps of h = dt/S (hand motion is interpolated across them,
 // which with the continuous surface test keeps the thread from tunnelling at hand speeds).
+// S adapts to the motion: the largest of the grips' moves this step, the needle grip's turn
+// (times the needle's size) and the fastest node's velocity times dt, divided by
+// maxSubstepMotion and rounded up, between 1 and `substeps`. A still or slow thread takes one
+// substep; a hand at 10 mm/s (0.1 mm per 10 ms frame) five. The default, 0.02 mm, is the
+// thread's contact diameter: with more per substep two strands pulled across each other can
+// be pushed through by the length restore before the contact holds them.
 // Each substep:
-//   1. predict: x ← x + e^{−drag·h}(x − x_prev) + g h²   (Verlet; gravity from the model)
+//   1. predict: x ← x + e^{−drag·h}(h/h_prev)(x − x_prev) + g h²   (Verlet; gravity from the model)
 //   2. leaders: grips at their interpolated targets (an oriented needle grip poses every
-//      needle node), active pierces at their points;
-//   3. `iterations` rounds of: contacts (capsules, surface, self; contact nodes become soft
-//      leaders, the paper's drape constraints) → restore link lengths (the solver) → rigid
-//      needle;
+//      needle node), active pierces at their points; the solver may carry the chain with
+//      them first (direct: carrySpans, chain_projection.h);
+//   3. up to `iterations` rounds of: contacts (capsules, surface, self; contact nodes become
+//      soft leaders, the paper's drape constraints) → restore link lengths (the solver) →
+//      rigid needle; a round whose contacts corrected nothing and whose lengths were restored
+//      ends the loop (the next would restore the same lengths again);
 //   4. sliding through pierces, then the break test between grips (suture_constraints.h).
 // Velocity is carried implicitly by x_prev (position-based dynamics), so corrections damp
-// themselves instead of injecting energy.
+// themselves instead of injecting energy. Buffers live in the solver: a step allocates nothing
+// once the chain's size is known (slides and breaks excepted).
 //
 // Solvers (makeSutureSolver):
 //   "ftl"    — the paper, faithful: follow-the-leader from every leader, the two passes
 //              averaged between leaders (follow_the_leader.h). Stretches between leaders.
-//   "direct" — follow-the-leader as a predictor, then exact lengths by the tridiagonal
-//              Gauss–Newton projection (chain_projection.h), O(N) per sweep: no stretch
-//              wherever the constraints allow it.
+//   "direct" — spans carried with their leaders (carrySpans) and follow-the-leader outward
+//              of the outermost leaders as the predictor, then exact lengths by the
+//              tridiagonal Gauss–Newton projection (chain_projection.h), O(N) per sweep: no
+//              stretch wherever the constraints allow it. (Averaging the two passes, the
+//              paper's rule, is a poor predictor for a long span: its junction links can
+//              start several times their length, and the projection then needs its damped
+//              steps.)
 //
 // Units: millimetres, seconds, grams.
 
@@ -45,12 +58,13 @@ struct SutureWorld {
 
 struct SutureStepParams {
   double dt = 0.01;                   ///< s: one tracker frame
-  int substeps = 4;                   ///< S ≥ 1
-  int iterations = 2;                 ///< contact ↔ length rounds per substep, ≥ 1
+  int substeps = 8;                   ///< the most substeps per step, ≥ 1
+  double maxSubstepMotion = 0.02;    ///< mm: motion per substep that adds one (0: always `substeps`)
+  int iterations = 2;                 ///< the most contact ↔ length rounds per substep, ≥ 1
   bool selfContact = true;
   double slideTolerance = 1e-3;       ///< side stretch beyond 1 that makes a pierce slide
   int projectionIterations = 32;      ///< direct: max Gauss–Newton sweeps per round (stops at tolerance)
-  double projectionTolerance = 1e-12; ///< direct: relative length residual to stop at
+  double projectionTolerance = 1e-10; ///< direct: relative length residual to stop at
   double contactWeight = 0.25;        ///< direct: inverse-mass scale of nodes in contact
 };
 
@@ -66,6 +80,7 @@ struct SutureStepReport {
   int contactNodes = 0;             ///< nodes corrected by contacts in the last round
   int selfPairs = 0;                ///< link pairs corrected by self-contact in the last round
   double maxStretch = 0.0;          ///< max |relative stretch| over intact links at the end
+  int substeps = 0;                 ///< substeps this step took
 };
 
 class SutureSolver {
@@ -78,18 +93,31 @@ class SutureSolver {
                         const SutureWorld& world, const SutureStepParams& params = {});
 
  protected:
+  /// Moves the predicted chain with its leaders before they are set (sorted by node, unique;
+  /// x still holds the leader nodes' predicted positions). Default: nothing.
+  virtual void carry(const SutureModel& model, Points& x, const std::vector<std::uint8_t>& alive,
+                     std::span<const Leader> leaders);
   /// Restores link lengths; `leaders` are sorted by node and unique; `contact[i]` marks nodes
-  /// corrected by contacts in this round.
-  virtual void restoreLengths(const SutureModel& model, Points& x,
+  /// corrected by contacts in this round. `round` counts this substep's rounds from 0. Returns
+  /// false when the lengths are not restored to the solver's tolerance (another round helps).
+  virtual bool restoreLengths(const SutureModel& model, Points& x,
                               const std::vector<std::uint8_t>& alive,
                               std::span<const Leader> leaders,
                               const std::vector<std::uint8_t>& contact,
-                              const SutureStepParams& params) = 0;
+                              const SutureStepParams& params, int round) = 0;
 
  private:
+  int substepCount(const SutureModel& model, const SutureState& state, std::span<const Grip> grips,
+                   const SutureStepParams& params) const;
+
   SelfContact self_;
+  ChainBlocks blocks_;
   Points xStart_{3, 0};
   std::vector<Leader> leaders_;
+  std::vector<Vec3> gripFrom_;
+  std::vector<Grip> current_;
+  std::vector<std::uint8_t> movable_, movableSurface_, contact_;
+  std::vector<ContactExemption> exemptions_;
 };
 
 /// The solver registered under `name` ("ftl", "direct"), or nullptr.
