@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace microsim::sim::suture {
 
@@ -103,7 +101,6 @@ ChainProjectionResult projectChainLengths(Points& x, std::span<const double> res
   Residual now = evaluate(x, rest, w, alive, s);
   double mu = kMinDamping;
   int stalled = 0;
-  const double entryRes = now.worst;
   while (result.iterations < maxIterations && now.worst > tolerance) {
     s.saved = x;
     gaussNewtonStep(x, rest, w, alive, mu, s);
@@ -123,7 +120,6 @@ ChainProjectionResult projectChainLengths(Points& x, std::span<const double> res
     if (mu > kMaxDamping) break;
   }
   result.residual = now.worst;
-  if (std::getenv("S2DBG")) std::fprintf(stderr, "proj it %d res %.3g mu %.3g entry %.3g\n", result.iterations, now.worst, mu, entryRes);
   return result;
 }
 
