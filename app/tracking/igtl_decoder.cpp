@@ -8,6 +8,7 @@
 #include <igtl_util.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 namespace microsim::tracking {
@@ -53,7 +54,8 @@ double timestampSeconds(std::uint64_t ts, double receiveTime) {
   return sec + frac / 4294967296.0;
 }
 
-// column-major 3 by 4 (rotation columns, then translation) into a homogeneous matrix
+// column-major 3 by 4 (rotation columns, then translation) into a homogeneous matrix;
+// `m` must be an aligned copy (message bodies are byte buffers with no alignment)
 Eigen::Matrix4d fromTransform(const igtl_float32* m) {
   Eigen::Matrix4d out = Eigen::Matrix4d::Identity();
   for (int c = 0; c < 4; ++c)
@@ -164,9 +166,14 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
     std::vector<igtl_tdata_element> elements(n);
     std::memcpy(elements.data(), body, static_cast<std::size_t>(size));
     igtl_tdata_convert_byte_order(elements.data(), static_cast<int>(n));
-    for (const igtl_tdata_element& e : elements)
-      out.add(RawPose{fieldString(e.name, IGTL_TDATA_LEN_NAME), time, fromTransform(e.transform),
-                                  e.type != IGTL_TDATA_TYPE_3D});
+    for (const igtl_tdata_element& e : elements) {
+      // the element struct is packed: copy its matrix out before reading floats from it
+      igtl_float32 transform[12];
+      std::memcpy(transform, reinterpret_cast<const unsigned char*>(&e) + offsetof(igtl_tdata_element, transform),
+                  sizeof(transform));
+      out.add(RawPose{fieldString(e.name, IGTL_TDATA_LEN_NAME), time, fromTransform(transform),
+                      e.type != IGTL_TDATA_TYPE_3D});
+    }
     return;
   }
 

@@ -137,7 +137,8 @@ int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     if (!movable[static_cast<std::size_t>(i)]) continue;
     // blocks whose swept box misses the surface's root box
-    const std::size_t block = static_cast<std::size_t>(i / ChainBlocks::kNodes);
+    // block b spans nodes 16b..16b+16, so the last node can belong only to the block before
+    const std::size_t block = std::min(static_cast<std::size_t>(i / ChainBlocks::kNodes), blocks.boxes.size() - 1);
     if (!boxesOverlap(blocks.boxes[block], tree.volume(0))) {
       i = std::min<Eigen::Index>(x.cols(), static_cast<Eigen::Index>(block + 1) * ChainBlocks::kNodes) - 1;
       continue;
