@@ -140,7 +140,7 @@ int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface
     // block b spans nodes 16b..16b+16, so the last node can belong only to the block before
     const std::size_t block = std::min(static_cast<std::size_t>(i / ChainBlocks::kNodes), blocks.boxes.size() - 1);
     if (!boxesOverlap(blocks.boxes[block], tree.volume(0))) {
-      i = std::min<Eigen::Index>(x.cols(), static_cast<Eigen::Index>(block + 1) * ChainBlocks::kNodes) - 1;
+      i = std::max(i, std::min<Eigen::Index>(x.cols(), static_cast<Eigen::Index>(block + 1) * ChainBlocks::kNodes) - 1);
       continue;
     }
 
