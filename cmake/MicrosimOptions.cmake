@@ -14,3 +14,13 @@ elseif(MICROSIM_SANITIZE STREQUAL "thread")
 elseif(NOT MICROSIM_SANITIZE STREQUAL "")
   message(FATAL_ERROR "MICROSIM_SANITIZE must be empty, 'address' or 'thread', not '${MICROSIM_SANITIZE}'")
 endif()
+
+# ccache, when installed, lets the several build trees (presets, sanitizer runs) share
+# compiled objects; the build never depends on it.
+option(MICROSIM_USE_CCACHE "Compile through ccache when it is installed" ON)
+if(MICROSIM_USE_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
+  find_program(MICROSIM_CCACHE ccache)
+  if(MICROSIM_CCACHE)
+    set(CMAKE_CXX_COMPILER_LAUNCHER ${MICROSIM_CCACHE})
+  endif()
+endif()

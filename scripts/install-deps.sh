@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   # toolchain
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git ccache
   # engine
   libeigen3-dev nlohmann-json3-dev libassimp-dev libfcl-dev
   # Qt 6: widgets, OpenGL, SQL (SQLite driver), charts, network, translations
