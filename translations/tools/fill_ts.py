@@ -6,7 +6,10 @@ A message with plural forms (%n) takes a list: one text per plural form of the l
 Maintainers' tool, not part of the build: after `cmake --build build --target
 update_translations` adds new source texts, add their translations to
 translations/glossary_<lang>.json and run
-    python3 translations/tools/fill_ts.py translations/microsim_de.ts translations/glossary_de.json
+    python3 translations/tools/fill_ts.py translations/microsim_de.ts translations/glossary_de.json \
+        translations/glossary/*_de.json
+(translations/glossary/<part>_<lang>.json keeps each part's texts apart, so that people
+working on different screens do not edit one file.)
 Entries without a glossary translation stay unfinished, which the translation test reports.
 """
 import json
@@ -14,9 +17,18 @@ import sys
 import xml.etree.ElementTree as ET
 
 
-def main(ts_path: str, glossary_path: str) -> int:
-    with open(glossary_path, encoding="utf-8") as f:
-        glossary = json.load(f)
+def load_glossaries(paths: list[str]) -> dict:
+    """Merges several glossaries (one per part of the app) context by context."""
+    merged: dict = {}
+    for path in paths:
+        with open(path, encoding="utf-8") as f:
+            for context, table in json.load(f).items():
+                merged.setdefault(context, {}).update(table)
+    return merged
+
+
+def main(ts_path: str, glossary_paths: list[str]) -> int:
+    glossary = load_glossaries(glossary_paths)
     tree = ET.parse(ts_path)
     missing = 0
     for context in tree.getroot().iter("context"):
@@ -46,4 +58,7 @@ def main(ts_path: str, glossary_path: str) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], sys.argv[2]))
+    if len(sys.argv) < 3:
+        print("usage: fill_ts.py FILE.ts GLOSSARY.json [GLOSSARY.json ...]", file=sys.stderr)
+        sys.exit(2)
+    sys.exit(main(sys.argv[1], sys.argv[2:]))
