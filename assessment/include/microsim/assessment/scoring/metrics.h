@@ -1,0 +1,72 @@
+#pragma once
+// The attempt's metrics by key: what a rubric can weigh. Every metric is one number; a
+// metric the attempt cannot have (an entry angle without a pierce) is NaN.
+//
+//   key                  unit   meaning
+//   time                 s      duration of the attempt
+//   path_length          mm     both hands' tool-tip path
+//   path_length_left     mm     left hand's (motion_metrics.h)
+//   path_length_right    mm     right hand's
+//   movements            count  velocity-threshold movements of both hands
+//   smoothness           1      mean log dimensionless jerk of those movements (≤ 0; higher
+//                               is smoother)
+//   idle_time            s      both hands below the idle speed
+//   regrasps             count  grabs after a release by the same hand
+//   suture_breaks        count  SutureBreak events
+//   max_stretch          1      largest link strain (l − r)/r of the tissue
+//   tissue_damage        count  TissueOverStretch and TissueTear events
+//   passages             count  wall passages (pierce_metrics.h)
+//   entry_angle          deg    mean entry angle to the wall normal
+//   exit_angle           deg    mean exit angle (passages with an exit)
+//   bite                 mm     mean bite from the cut edge
+//   bite_walls           1      mean bite in wall thicknesses
+//   full_thickness       1      fraction of passages through the whole wall
+//   back_wall_catches    count  passages entering the back wall
+//   stitches             count  stitches (stitch_metrics.h)
+//   bite_symmetry        mm     mean |bite_a − bite_b| of the stitches
+//   spacing              deg    mean angle between consecutive stitches
+//   triangulation_error  deg    largest |arc − 120°| of the first three stitches
+
+#include "microsim/assessment/scoring/attempt.h"
+#include "microsim/assessment/scoring/motion_metrics.h"
+#include "microsim/assessment/scoring/pierce_metrics.h"
+#include "microsim/assessment/scoring/stitch_metrics.h"
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace microsim::assessment {
+
+struct MetricInfo {
+  std::string_view key;
+  std::string_view unit;  ///< "s", "mm", "deg", "count", "1"
+};
+
+/// Every metric key computeMetrics produces, in table order.
+std::span<const MetricInfo> metricCatalogue();
+/// The catalogue entry of `key`, or null.
+const MetricInfo* findMetric(std::string_view key);
+
+struct MetricValue {
+  std::string key;
+  double value = 0.0;  ///< NaN when the attempt cannot have it
+  std::string unit;
+};
+
+struct AttemptMetrics {
+  std::vector<MetricValue> values;  ///< catalogue order
+  std::vector<PierceMetrics> pierces;
+  std::vector<StitchMetrics> stitches;
+  std::array<HandMotion, sim::kHandCount> hands;
+
+  /// The value of `key`; nullopt for an unknown key.
+  std::optional<double> value(std::string_view key) const;
+};
+
+AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params = {});
+
+}  // namespace microsim::assessment

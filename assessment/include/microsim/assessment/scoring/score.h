@@ -1,0 +1,54 @@
+#pragma once
+// Scoring: a rubric (rubric.h) applied to an attempt's metrics (metrics.h).
+//
+//   score = 100 · Σ weight·points / Σ weight, then capped by every never-event that fired;
+//   passed = score ≥ pass_mark.
+// Proficiency is the pass mark on two consecutive Test attempts.
+
+#include "microsim/assessment/scoring/attempt.h"
+#include "microsim/assessment/scoring/metrics.h"
+#include "microsim/assessment/scoring/pierce_metrics.h"
+#include "microsim/assessment/scoring/rubric.h"
+#include "microsim/assessment/scoring/stitch_metrics.h"
+
+#include <string>
+#include <vector>
+
+namespace microsim::assessment {
+
+struct MetricScore {
+  std::string key;
+  double value = 0.0;      ///< in `unit`; NaN when the attempt lacks it
+  std::string unit;
+  double target = 0.0;
+  double tolerance = 0.0;
+  double weight = 0.0;
+  double points = 0.0;     ///< 0..1
+  std::string feedback;    ///< empty when full points, else a key like "entry_angle.too_oblique"
+};
+
+struct AttemptScore {
+  double score = 0.0;      ///< 0..100
+  bool passed = false;
+  std::string rubricId;
+  int rubricVersion = 0;
+  std::vector<MetricScore> metrics;       ///< rubric order
+  std::vector<std::string> neverEvents;   ///< feedback keys of the never-events that fired
+  std::vector<PierceMetrics> pierces;
+  std::vector<StitchMetrics> stitches;
+  bool truncated = false;                 ///< scored from a partial recording
+};
+
+/// Points (0..1) and feedback of one value against one rubric metric.
+MetricScore scoreMetric(const RubricMetric& metric, double value, std::string unit);
+
+/// Scores a metric set (no pierce lists).
+AttemptScore scoreMetrics(const std::vector<MetricValue>& values, const Rubric& rubric);
+
+/// Computes the metrics with the rubric's motion parameters and scores them.
+AttemptScore scoreAttempt(const Attempt& attempt, const Rubric& rubric);
+
+/// True when two consecutive scores (Test attempts, oldest first) reach the pass mark.
+bool proficient(const std::vector<double>& testScoresOldestFirst, const Rubric& rubric);
+
+}  // namespace microsim::assessment
