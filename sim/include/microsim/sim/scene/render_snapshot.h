@@ -1,0 +1,62 @@
+#pragma once
+// What the viewport draws of one simulated step (DESIGN.md §Data flow of one frame): the
+// tissue's positions and per-vertex normals, the suture's nodes, and each tool's pose.
+//
+// The simulation thread fills a snapshot after each step and hands it over (double buffer or
+// short lock); the GUI thread only reads it. Everything is a plain value: floats laid out
+// for a vertex buffer (x y z per vertex), no pointer into the scene, so a snapshot outlives
+// the step that made it. Static geometry (the tissue's triangles, a jaw's mesh) is the
+// scene's and is read once from Scene::def() / Scene::tissue(); a snapshot carries only what
+// moves. `fill` reuses the snapshot's buffers, so a steady stream of steps allocates nothing.
+//
+// Units: millimetres, seconds.
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace microsim::sim {
+
+class Scene;
+
+struct ToolSnapshot {
+  bool present = false;                                ///< the scene declares this tool
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();  ///< tool frame → scene
+  double closure = 0.0;                                ///< 0 open .. 1 closed (forceps)
+  /// Each jaw's transform, jaw mesh frame → scene: [0] upper, [1] lower (forceps only; the
+  /// lower jaw's mesh is mirrored in y, see tools::jawPoses).
+  std::array<Eigen::Matrix4f, 2> jaws{Eigen::Matrix4f::Identity(), Eigen::Matrix4f::Identity()};
+  bool holdsTissue = false;
+  bool holdsSuture = false;
+};
+
+struct RenderSnapshot {
+  double time = 0.0;  ///< s, scene time at the end of the step
+  int steps = 0;
+  /// Tissue vertices, 3 floats each (mm), in the order of Scene::tissue() nodes.
+  std::vector<float> tissuePositions;
+  /// Unit per-vertex normals, 3 floats each: the area-weighted mean of the normals of the
+  /// triangles around the vertex; (0, 0, 0) for a node on no triangle.
+  std::vector<float> tissueNormals;
+  /// Suture nodes, 3 floats each (mm); empty without a needle. The first `needleNodes` are
+  /// the rigid needle, the rest the thread.
+  std::vector<float> suturePositions;
+  /// Per suture link: 1 intact, 0 broken (a broken link is not drawn).
+  std::vector<std::uint8_t> sutureAlive;
+  int needleNodes = 0;
+  float sutureRadius = 0.0f;  ///< mm, the thread's contact radius
+  std::array<ToolSnapshot, 2> forceps;  ///< by hand: [0] left, [1] right
+  int pierceCount = 0;                  ///< pierce events so far
+};
+
+/// Fills `out` from the scene's current state, reusing its buffers.
+void fillSnapshot(const Scene& scene, RenderSnapshot& out);
+
+/// Per-vertex normals of a triangle mesh (area-weighted), 3 floats per vertex, written into
+/// `normals` (resized to positions.size()). Shared by the snapshot and by static meshes.
+void vertexNormals(const std::vector<float>& positions,
+                   const std::vector<std::array<int, 3>>& triangles, std::vector<float>& normals);
+
+}  // namespace microsim::sim

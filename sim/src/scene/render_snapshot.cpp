@@ -1,0 +1,80 @@
+#include "microsim/sim/scene/render_snapshot.h"
+
+#include "microsim/sim/scene/scene.h"
+#include "microsim/sim/tools/forceps.h"
+
+#include <cmath>
+
+namespace microsim::sim {
+
+namespace {
+
+void copyPoints(const Points& x, std::vector<float>& out) {
+  out.resize(static_cast<std::size_t>(x.cols()) * 3);
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    for (int d = 0; d < 3; ++d) {
+      out[static_cast<std::size_t>(i) * 3 + d] = static_cast<float>(x(d, i));
+    }
+  }
+}
+
+}  // namespace
+
+void vertexNormals(const std::vector<float>& positions,
+                   const std::vector<std::array<int, 3>>& triangles, std::vector<float>& normals) {
+  normals.assign(positions.size(), 0.0f);
+  const auto vertex = [&](int i) {
+    return Eigen::Vector3f(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+  };
+  for (const auto& t : triangles) {
+    // the cross product's length is twice the area, so summing it weights by area
+    const Eigen::Vector3f n = (vertex(t[1]) - vertex(t[0])).cross(vertex(t[2]) - vertex(t[0]));
+    for (int c : t) {
+      for (int d = 0; d < 3; ++d) normals[3 * c + d] += n[d];
+    }
+  }
+  for (std::size_t i = 0; i + 2 < normals.size(); i += 3) {
+    const float len = std::sqrt(normals[i] * normals[i] + normals[i + 1] * normals[i + 1] +
+                                normals[i + 2] * normals[i + 2]);
+    if (len > 0.0f && std::isfinite(len)) {
+      for (int d = 0; d < 3; ++d) normals[i + d] /= len;
+    } else {
+      for (int d = 0; d < 3; ++d) normals[i + d] = 0.0f;
+    }
+  }
+}
+
+void fillSnapshot(const Scene& scene, RenderSnapshot& out) {
+  out.time = scene.time();
+  out.steps = scene.steps();
+  copyPoints(scene.tissueState().x, out.tissuePositions);
+  vertexNormals(out.tissuePositions, scene.tissue().triangles(), out.tissueNormals);
+
+  if (const auto* state = scene.sutureState()) {
+    copyPoints(state->x, out.suturePositions);
+    out.sutureAlive = state->alive;
+    out.needleNodes = scene.sutureModel()->swage() + 1;
+    out.sutureRadius = static_cast<float>(scene.sutureModel()->def().contactRadius);
+  } else {
+    out.suturePositions.clear();
+    out.sutureAlive.clear();
+    out.needleNodes = 0;
+    out.sutureRadius = 0.0f;
+  }
+
+  for (int h = 0; h < kHandCount; ++h) {
+    ToolSnapshot& tool = out.forceps[static_cast<std::size_t>(h)];
+    const tools::Forceps* forceps = scene.forceps(static_cast<Hand>(h));
+    tool.present = forceps != nullptr;
+    if (!forceps) continue;
+    tool.pose = forceps->pose().matrix().cast<float>();
+    tool.closure = forceps->closure();
+    const auto jaws = tools::jawPoses(forceps->def(), forceps->pose(), forceps->closure());
+    for (std::size_t j = 0; j < 2; ++j) tool.jaws[j] = jaws[j].matrix().cast<float>();
+    tool.holdsTissue = !forceps->heldNodes().empty();
+    tool.holdsSuture = forceps->holdsSuture();
+  }
+  out.pierceCount = static_cast<int>(scene.pierces().size());
+}
+
+}  // namespace microsim::sim
