@@ -3,6 +3,15 @@
 // (assessment/migrations/NNNN_name.sql). A migration's statements end with ';' at the
 // end of a line. Each pending migration runs, with its row in schema_migrations, in
 // one transaction: a database is always at a whole version, never between two.
+//
+// One text serves SQLite and PostgreSQL. The runner substitutes, per driver:
+//   @ID@    INTEGER PRIMARY KEY          | BIGSERIAL PRIMARY KEY
+//   @BLOB@  BLOB                         | BYTEA
+//   @REAL@  REAL                         | DOUBLE PRECISION
+// and a statement that begins with @SQLITE@ or @POSTGRESQL@ runs on that driver only
+// (for what the dialects spell differently, such as triggers). Timestamps are ISO-8601
+// TEXT in UTC. A statement may hold ';' inside a line (a trigger body written on one
+// line); only a ';' that ends a line ends a statement.
 
 #include <QSqlDatabase>
 #include <QString>
@@ -10,6 +19,15 @@
 #include <vector>
 
 namespace microsim::assessment {
+
+enum class Driver { SQLite, PostgreSQL };
+
+/// The driver behind a QtSql connection (QSQLITE or QPSQL).
+Driver driverOf(const QSqlDatabase& db);
+
+/// `sql` with the placeholders replaced for `driver`; statements marked for the other
+/// driver are dropped.
+QStringList statementsFor(const QString& sql, Driver driver);
 
 struct Migration {
   int version = 0;
@@ -39,7 +57,8 @@ struct MigrationOutcome {
 /// The version recorded in schema_migrations (0 for a new database).
 int schemaVersion(QSqlDatabase& db);
 
-/// Applies every migration in `migrations` newer than the database's version.
+/// Applies every migration in `migrations` newer than the database's version, with the
+/// placeholders of the connection's driver.
 MigrationOutcome migrate(QSqlDatabase& db, const std::vector<Migration>& migrations);
 
 }  // namespace microsim::assessment
