@@ -1,0 +1,239 @@
+#include "gui/simulation_runner.h"
+
+#include <QThread>
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+namespace microsim::gui {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// median and 99th percentile of step times (ms); sorts its argument
+std::pair<double, double> medianAndP99(std::vector<double>& ms) {
+  if (ms.empty()) return {0.0, 0.0};
+  std::sort(ms.begin(), ms.end());
+  const auto at = [&](double q) {
+    const auto i = static_cast<std::size_t>(q * static_cast<double>(ms.size() - 1) + 0.5);
+    return ms[std::min(i, ms.size() - 1)];
+  };
+  return {at(0.5), at(0.99)};
+}
+
+const std::vector<std::array<int, 3>> kNoTriangles;
+
+}  // namespace
+
+SimulationRunner::SimulationRunner(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<sim::SceneEvent>();
+  qRegisterMetaType<sim::InputFrame>();
+}
+
+SimulationRunner::~SimulationRunner() { stop(); }
+
+bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::SceneError* error) {
+  stop();
+  scene_.reset();
+  {
+    const std::lock_guard lock(snapshotMutex_);
+    latest_.reset();
+  }
+  spare_.reset();
+  {
+    const std::lock_guard lock(resultsMutex_);
+    events_.clear();
+    pierces_.clear();
+    consumed_.clear();
+  }
+  {
+    const std::lock_guard lock(inputMutex_);
+    haveFrame_ = false;
+    latestFrame_ = {};
+  }
+  steps_ = 0;
+  hash_ = 0;
+
+  auto opened = sim::openScene(scenePath.toStdString(), mode);
+  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
+    if (error) *error = *e;
+    return false;
+  }
+  scene_ = std::move(std::get<std::unique_ptr<sim::Scene>>(opened));
+  scenePath_ = scenePath;
+  hash_ = scene_->hash();
+  publish();
+  return true;
+}
+
+void SimulationRunner::start() {
+  if (!scene_ || running_) return;
+  launch([this] { runLive(); });
+}
+
+void SimulationRunner::replay(std::vector<sim::InputFrame> frames) {
+  if (!scene_) return;
+  stop();
+  launch([this, frames = std::move(frames)] { runReplay(frames); });
+}
+
+void SimulationRunner::launch(std::function<void()> body) {
+  if (thread_) {  // a replay that ended by itself
+    thread_->wait();
+    delete thread_;
+    thread_ = nullptr;
+  }
+  stopRequested_ = false;
+  running_ = true;
+  openRecording();
+  thread_ = QThread::create(std::move(body));
+  thread_->setObjectName(QStringLiteral("simulation"));
+  thread_->start(QThread::HighPriority);
+}
+
+void SimulationRunner::stop() {
+  if (thread_) {
+    {
+      const std::lock_guard lock(inputMutex_);
+      stopRequested_ = true;
+    }
+    wake_.notify_all();
+    thread_->wait();
+    delete thread_;
+    thread_ = nullptr;
+    running_ = false;
+  }
+  finishRecording();
+}
+
+void SimulationRunner::setRecordingFile(const QString& path) { recordingPath_ = path; }
+
+sim::RecordingStatus SimulationRunner::recordingStatus() const {
+  const std::lock_guard lock(resultsMutex_);
+  return recordingStatus_;
+}
+
+void SimulationRunner::openRecording() {
+  const std::lock_guard lock(resultsMutex_);
+  recordingStatus_ = {};
+  if (recordingPath_.isEmpty() || writer_.isOpen()) return;
+  // the metadata names the scene, as `microsim-cli run` expects no more of it
+  const std::string meta = R"({"scene": ")" + scenePath_.toStdString() + R"("})";
+  recordingStatus_ = writer_.open(recordingPath_.toStdString(), meta);
+}
+
+void SimulationRunner::finishRecording() {
+  const std::lock_guard lock(resultsMutex_);
+  if (!writer_.isOpen()) return;
+  const sim::RecordingStatus s = writer_.finish();
+  if (recordingStatus_.ok()) recordingStatus_ = s;
+}
+
+void SimulationRunner::submitFrame(const sim::InputFrame& frame) {
+  const std::lock_guard lock(inputMutex_);
+  latestFrame_ = frame;
+  haveFrame_ = true;
+}
+
+std::shared_ptr<const sim::RenderSnapshot> SimulationRunner::latestSnapshot() const {
+  const std::lock_guard lock(snapshotMutex_);
+  return latest_;
+}
+
+std::vector<sim::SceneEvent> SimulationRunner::events() const {
+  const std::lock_guard lock(resultsMutex_);
+  return events_;
+}
+
+std::vector<sim::PierceEvent> SimulationRunner::pierces() const {
+  const std::lock_guard lock(resultsMutex_);
+  return pierces_;
+}
+
+std::vector<sim::InputFrame> SimulationRunner::consumedFrames() const {
+  const std::lock_guard lock(resultsMutex_);
+  return consumed_;
+}
+
+const sim::SceneDef* SimulationRunner::sceneDef() const { return scene_ ? &scene_->def() : nullptr; }
+
+const std::vector<std::array<int, 3>>& SimulationRunner::tissueTriangles() const {
+  return scene_ ? scene_->tissue().triangles() : kNoTriangles;
+}
+
+void SimulationRunner::publish() {
+  // a buffer a reader still holds is left to it; fill a fresh one instead
+  if (!spare_ || spare_.use_count() > 1) spare_ = std::make_shared<sim::RenderSnapshot>();
+  sim::fillSnapshot(*scene_, *spare_);
+  {
+    const std::lock_guard lock(snapshotMutex_);
+    std::swap(latest_, spare_);
+  }
+  if (spare_.use_count() > 1) spare_.reset();
+}
+
+void SimulationRunner::stepOnce(const sim::InputFrame& frame, std::vector<double>* times) {
+  const std::size_t eventsBefore = scene_->events().size();
+  const sim::StepReport report = scene_->step(frame);
+  if (times) times->push_back(report.times.total * 1000.0);
+  steps_ = scene_->steps();
+
+  std::vector<sim::SceneEvent> added;
+  {
+    const std::lock_guard lock(resultsMutex_);
+    consumed_.push_back(frame);
+    if (writer_.isOpen() && recordingStatus_.ok()) recordingStatus_ = writer_.append(frame);
+    const auto& all = scene_->events();
+    if (all.size() > eventsBefore) {
+      added.assign(all.begin() + static_cast<std::ptrdiff_t>(eventsBefore), all.end());
+      events_.insert(events_.end(), added.begin(), added.end());
+    }
+    if (scene_->pierces().size() != pierces_.size()) pierces_ = scene_->pierces();
+  }
+  publish();
+  for (const sim::SceneEvent& e : added) Q_EMIT sceneEvent(e);
+  Q_EMIT snapshotReady();
+}
+
+void SimulationRunner::runLive() {
+  const auto dt = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(scene_->dt()));
+  std::vector<double> times;
+  auto next = Clock::now();
+  auto lastReport = next;
+  sim::InputFrame frame;  // untracked hands until a source submits a frame
+  for (auto& h : frame.hands) h.tracked = false;
+  while (true) {
+    {
+      std::unique_lock lock(inputMutex_);
+      wake_.wait_until(lock, next, [this] { return stopRequested_.load(); });
+      if (stopRequested_) break;
+      if (haveFrame_) frame = latestFrame_;
+    }
+    stepOnce(frame, &times);
+    next += dt;
+    const auto now = Clock::now();
+    if (now > next + dt) next = now;  // behind by more than a step: do not race to catch up
+    if (now - lastReport >= std::chrono::seconds(1)) {
+      const auto [median, p99] = medianAndP99(times);
+      times.clear();
+      lastReport = now;
+      Q_EMIT stepTimes(median, p99);
+    }
+  }
+  hash_ = scene_->hash();
+}
+
+void SimulationRunner::runReplay(const std::vector<sim::InputFrame>& frames) {
+  for (const sim::InputFrame& f : frames) {
+    if (stopRequested_) break;
+    stepOnce(f, nullptr);
+  }
+  hash_ = scene_->hash();
+  finishRecording();
+  running_ = false;
+  Q_EMIT replayFinished();
+}
+
+}  // namespace microsim::gui
