@@ -1,13 +1,22 @@
 #include "microsim/assessment/storage/history_database.h"
 
-#include "microsim/assessment/storage/migrations.h"
+#include "storage/sql_util.h"
 
 #include <QAtomicInt>
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QSet>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QStandardPaths>
+#include <QSysInfo>
+#include <QUrl>
+
+#ifdef Q_OS_UNIX
+#include <cerrno>
+#include <csignal>
+#endif
 
 namespace microsim::assessment {
 
@@ -16,6 +25,7 @@ namespace {
 // SQLite's primary result codes, as QSqlError::nativeErrorCode() reports them.
 constexpr int kSqliteBusy = 5;
 constexpr int kSqliteLocked = 6;
+constexpr int kSqliteReadOnly = 8;
 constexpr int kSqliteCorrupt = 11;
 constexpr int kSqliteNotADb = 26;
 
@@ -30,12 +40,36 @@ DatabaseError classify(const QSqlError& error) {
     case kSqliteBusy:
     case kSqliteLocked:
       return DatabaseError::Locked;
+    case kSqliteReadOnly:
+      return DatabaseError::ReadOnly;
     case kSqliteCorrupt:
     case kSqliteNotADb:
       return DatabaseError::NotADatabase;
     default:
       return DatabaseError::CannotOpen;
   }
+}
+
+DatabaseStatus failure(DatabaseError error, const QString& message) {
+  DatabaseStatus status;
+  status.error = error;
+  status.driverMessage = message;
+  return status;
+}
+
+bool writable(const QString& path) {
+  return QFile::permissions(path) & (QFileDevice::WriteOwner | QFileDevice::WriteUser);
+}
+
+// true unless `pid` is certainly gone (no such process on this machine)
+bool processMayBeAlive(qint64 pid) {
+#ifdef Q_OS_UNIX
+  if (pid <= 0) return false;
+  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH;
+#else
+  Q_UNUSED(pid);
+  return true;
+#endif
 }
 
 }  // namespace
@@ -49,61 +83,133 @@ QString HistoryDatabase::defaultPath() {
          QStringLiteral("/history.sqlite");
 }
 
-DatabaseStatus HistoryDatabase::open(const QString& path) {
+bool HistoryDatabase::isUrl(const QString& location) {
+  return location.startsWith(QLatin1String("postgresql://")) ||
+         location.startsWith(QLatin1String("postgres://"));
+}
+
+DatabaseStatus HistoryDatabase::open(const QString& location) {
   close();
-  DatabaseStatus status;
+  return isUrl(location) ? openPostgres(location) : openSqlite(location);
+}
+
+DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
+  driver_ = Driver::SQLite;
   const QFileInfo info(path);
-  if (!QDir().mkpath(info.absolutePath())) {
-    status.error = DatabaseError::CannotCreateFolder;
-    status.driverMessage = info.absolutePath();
-    return status;
-  }
+  if (!QDir().mkpath(info.absolutePath()))
+    return failure(DatabaseError::CannotCreateFolder, info.absolutePath());
+  // permissions are checked by hand: as root SQLite would write a file marked read-only
+  if ((info.exists() && !writable(info.absoluteFilePath())) || !writable(info.absolutePath()))
+    return failure(DatabaseError::ReadOnly, info.absoluteFilePath());
 
   QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName_);
   db.setDatabaseName(info.absoluteFilePath());
   db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=2000"));
   if (!db.open()) {
-    status.error = classify(db.lastError());
-    status.driverMessage = db.lastError().text();
+    const DatabaseStatus status = failure(classify(db.lastError()), db.lastError().text());
     close();
     return status;
   }
 
   // the first statements touch the file: a corrupt or foreign file fails here
   QSqlQuery q(db);
-  for (const char* pragma : {"PRAGMA foreign_keys = ON", "PRAGMA journal_mode = WAL",
-                             "PRAGMA synchronous = NORMAL"}) {
-    if (!q.exec(QString::fromLatin1(pragma))) {
-      status.error = classify(q.lastError());
-      status.driverMessage = q.lastError().text();
+  for (const char* statement : {"PRAGMA foreign_keys = ON", "PRAGMA journal_mode = WAL",
+                                "PRAGMA synchronous = NORMAL", "SELECT count(*) FROM sqlite_master"}) {
+    if (!q.exec(QString::fromLatin1(statement))) {
+      const DatabaseStatus status = failure(classify(q.lastError()), q.lastError().text());
       close();
       return status;
     }
   }
-  if (!q.exec(QStringLiteral("SELECT count(*) FROM sqlite_master"))) {
-    status.error = classify(q.lastError());
-    status.driverMessage = q.lastError().text();
+  session_ = QStringLiteral("%1@%2").arg(QCoreApplication::applicationPid()).arg(QSysInfo::machineHostName());
+  path_ = info.absoluteFilePath();
+  return finishOpen(db);
+}
+
+DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
+  driver_ = Driver::PostgreSQL;
+  const QUrl url(location, QUrl::StrictMode);
+  const QString name = url.path().mid(1);
+  if (!url.isValid() || url.host().isEmpty() || name.isEmpty())
+    return failure(DatabaseError::CannotOpen, url.toString(QUrl::RemovePassword));
+  if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QPSQL")))
+    return failure(DatabaseError::CannotOpen, QStringLiteral("QPSQL driver not available"));
+
+  QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), connectionName_);
+  db.setHostName(url.host());
+  db.setPort(url.port(5432));
+  db.setDatabaseName(name);
+  db.setUserName(url.userName());
+  db.setPassword(url.password());
+  db.setConnectOptions(QStringLiteral("connect_timeout=10"));
+  if (!db.open()) {
+    const DatabaseStatus status = failure(DatabaseError::CannotOpen, db.lastError().text());
     close();
     return status;
   }
+  QSqlQuery q(db);
+  if (!q.exec(QStringLiteral("SELECT pg_backend_pid()")) || !q.next()) {
+    const DatabaseStatus status = failure(DatabaseError::CannotOpen, q.lastError().text());
+    close();
+    return status;
+  }
+  session_ = QStringLiteral("pg:%1").arg(q.value(0).toLongLong());
+  path_ = url.toString(QUrl::RemovePassword);
+  return finishOpen(db);
+}
 
+DatabaseStatus HistoryDatabase::finishOpen(QSqlDatabase& db) {
+  DatabaseStatus status;
   const MigrationOutcome outcome = migrate(db, bundledMigrations());
   status.schemaVersion = outcome.version;
-  switch (outcome.result) {
-    case MigrationResult::Ok:
-      break;
-    case MigrationResult::NewerSchema:
-      status.error = DatabaseError::NewerSchema;
-      close();
-      return status;
-    case MigrationResult::Failed:
-      status.error = DatabaseError::MigrationFailed;
-      status.driverMessage = outcome.driverMessage;
-      close();
-      return status;
+  if (outcome.result != MigrationResult::Ok) {
+    status.error = outcome.result == MigrationResult::NewerSchema ? DatabaseError::NewerSchema
+                                                                  : DatabaseError::MigrationFailed;
+    status.driverMessage = outcome.driverMessage;
+    close();
+    return status;
   }
-  path_ = info.absoluteFilePath();
+  interruptOrphanedAttempts();
+  last_ = {};
   return status;
+}
+
+void HistoryDatabase::interruptOrphanedAttempts() {
+  QSqlDatabase db = connection();
+  QSqlQuery q(db);
+  if (!q.exec(QStringLiteral("SELECT id, session FROM attempts WHERE status = 'in_progress'"))) return;
+  QList<qint64> orphans;
+  QSet<QString> liveBackends;
+  if (driver_ == Driver::PostgreSQL) {
+    QSqlQuery live(db);
+    if (live.exec(QStringLiteral("SELECT pid FROM pg_stat_activity")))
+      while (live.next()) liveBackends.insert(QStringLiteral("pg:%1").arg(live.value(0).toLongLong()));
+  }
+  const QString host = QSysInfo::machineHostName();
+  while (q.next()) {
+    const QString session = q.value(1).toString();
+    bool gone = session.isEmpty();
+    if (!gone && driver_ == Driver::PostgreSQL) {
+      gone = !liveBackends.contains(session);
+    } else if (!gone) {
+      // pid@host: only this machine's processes can be checked; our own pid may be another
+      // connection of this process
+      const qsizetype at = session.indexOf(QLatin1Char('@'));
+      const qint64 pid = session.left(at).toLongLong();
+      gone = session.mid(at + 1) == host && pid != QCoreApplication::applicationPid() &&
+             !processMayBeAlive(pid);
+    }
+    if (gone) orphans << q.value(0).toLongLong();
+  }
+  q.finish();
+  for (qint64 id : orphans) {
+    QSqlQuery u(db);
+    u.prepare(QStringLiteral(
+        "UPDATE attempts SET status = 'interrupted', finished_at = ? WHERE id = ? AND status = 'in_progress'"));
+    u.addBindValue(sql::now());
+    u.addBindValue(id);
+    u.exec();
+  }
 }
 
 void HistoryDatabase::close() {
@@ -115,6 +221,7 @@ void HistoryDatabase::close() {
     QSqlDatabase::removeDatabase(connectionName_);
   }
   path_.clear();
+  session_.clear();
 }
 
 bool HistoryDatabase::isOpen() const {
@@ -130,6 +237,33 @@ int HistoryDatabase::schemaVersion() {
 
 QSqlDatabase HistoryDatabase::connection() const {
   return QSqlDatabase::database(connectionName_, false);
+}
+
+bool HistoryDatabase::fail(HistoryError error, const QString& driverMessage) {
+  last_ = {error, driverMessage};
+  return false;
+}
+
+bool HistoryDatabase::succeed() {
+  last_ = {};
+  return true;
+}
+
+std::optional<Role> HistoryDatabase::storedRole(qint64 personId) {
+  QSqlQuery q(connection());
+  q.prepare(QStringLiteral("SELECT role FROM trainees WHERE id = ?"));
+  q.addBindValue(personId);
+  if (!q.exec() || !q.next()) return std::nullopt;
+  return sql::roleFromText(q.value(0).toString());
+}
+
+bool HistoryDatabase::mayView(const Viewer& viewer, std::optional<qint64> traineeId) {
+  if (!isOpen()) return fail(HistoryError::NotOpen);
+  const std::optional<Role> role = storedRole(viewer.userId);
+  if (!role || *role != viewer.role) return fail(HistoryError::Forbidden);
+  if (viewer.role == Role::Trainee && traineeId && *traineeId != viewer.userId)
+    return fail(HistoryError::Forbidden);
+  return succeed();
 }
 
 }  // namespace microsim::assessment

@@ -58,6 +58,28 @@ QStringList splitStatements(const QString& sql) {
   return statements;
 }
 
+Driver driverOf(const QSqlDatabase& db) {
+  return db.driverName() == QLatin1String("QPSQL") ? Driver::PostgreSQL : Driver::SQLite;
+}
+
+QStringList statementsFor(const QString& sql, Driver driver) {
+  const bool sqlite = driver == Driver::SQLite;
+  const QString mine = sqlite ? QStringLiteral("@SQLITE@") : QStringLiteral("@POSTGRESQL@");
+  const QString theirs = sqlite ? QStringLiteral("@POSTGRESQL@") : QStringLiteral("@SQLITE@");
+  QStringList out;
+  for (QString statement : splitStatements(sql)) {
+    if (statement.startsWith(theirs)) continue;
+    if (statement.startsWith(mine)) statement = statement.mid(mine.size()).trimmed();
+    statement.replace(QLatin1String("@ID@"),
+                      sqlite ? QLatin1String("INTEGER PRIMARY KEY") : QLatin1String("BIGSERIAL PRIMARY KEY"));
+    statement.replace(QLatin1String("@BLOB@"), sqlite ? QLatin1String("BLOB") : QLatin1String("BYTEA"));
+    statement.replace(QLatin1String("@REAL@"),
+                      sqlite ? QLatin1String("REAL") : QLatin1String("DOUBLE PRECISION"));
+    out << statement;
+  }
+  return out;
+}
+
 int schemaVersion(QSqlDatabase& db) {
   if (!ensureMigrationsTable(db)) return -1;
   QSqlQuery q(db);
@@ -92,7 +114,7 @@ MigrationOutcome migrate(QSqlDatabase& db, const std::vector<Migration>& migrati
     }
     QSqlQuery q(db);
     bool ok = true;
-    for (const QString& statement : splitStatements(m.sql)) {
+    for (const QString& statement : statementsFor(m.sql, driverOf(db))) {
       if (!q.exec(statement)) {
         ok = false;
         break;

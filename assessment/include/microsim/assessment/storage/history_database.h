@@ -144,7 +144,6 @@ class HistoryDatabase {
   bool succeed();
   std::optional<Role> storedRole(qint64 personId);
   bool mayView(const Viewer& viewer, std::optional<qint64> traineeId);
-  QString sessionTag();
   void interruptOrphanedAttempts();
   DatabaseStatus openSqlite(const QString& path);
   DatabaseStatus openPostgres(const QString& url);
@@ -153,6 +152,7 @@ class HistoryDatabase {
   QString connectionName_;
   QString path_;
   Driver driver_ = Driver::SQLite;
+  QString session_;  ///< tag of this connection's session, stored with begun attempts
   HistoryStatus last_;
   int passwordIterations_ = kDefaultPasswordIterations;
 };
