@@ -2,8 +2,9 @@
 option(MICROSIM_BUILD_TESTS "Build the GoogleTest suites and register them with CTest" ON)
 option(MICROSIM_BUILD_BENCHMARKS "Build the benchmark programs behind 'microsim-cli bench'" ON)
 option(MICROSIM_WERROR "Treat compiler warnings as errors" OFF)
-set(MICROSIM_SANITIZE "" CACHE STRING "Sanitizers: empty, 'address' (address+undefined) or 'thread'")
-set_property(CACHE MICROSIM_SANITIZE PROPERTY STRINGS "" address thread)
+set(MICROSIM_SANITIZE "" CACHE STRING
+  "Sanitizers: empty, 'address' (address+undefined), 'thread', or 'fuzzer' (clang: libFuzzer coverage + address+undefined)")
+set_property(CACHE MICROSIM_SANITIZE PROPERTY STRINGS "" address thread fuzzer)
 
 if(MICROSIM_SANITIZE STREQUAL "address")
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
@@ -11,8 +12,16 @@ if(MICROSIM_SANITIZE STREQUAL "address")
 elseif(MICROSIM_SANITIZE STREQUAL "thread")
   add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
   add_link_options(-fsanitize=thread)
+elseif(MICROSIM_SANITIZE STREQUAL "fuzzer")
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "MICROSIM_SANITIZE=fuzzer needs clang (libFuzzer); use the 'fuzz' preset")
+  endif()
+  # every library is instrumented for coverage; only the fuzz executables link libFuzzer's main
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                      -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
 elseif(NOT MICROSIM_SANITIZE STREQUAL "")
-  message(FATAL_ERROR "MICROSIM_SANITIZE must be empty, 'address' or 'thread', not '${MICROSIM_SANITIZE}'")
+  message(FATAL_ERROR "MICROSIM_SANITIZE must be empty, 'address', 'thread' or 'fuzzer', not '${MICROSIM_SANITIZE}'")
 endif()
 
 # ccache, when installed, lets the several build trees (presets, sanitizer runs) share
