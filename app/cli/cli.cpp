@@ -12,6 +12,7 @@ std::vector<Command> commands() {
       {QStringLiteral("run"), Cli::tr("run a scene on recorded or scripted input (hash, events, timings)"), &runRun},
       {QStringLiteral("track"), Cli::tr("record what an OpenIGTLink tracker sends"), &runTrack},
       {QStringLiteral("calibrate"), Cli::tr("pivot calibration or tracker-to-scene registration from a file"), &runCalibrate},
+      {QStringLiteral("score"), Cli::tr("score a recorded attempt with a rubric (and store it in the history)"), &runScore},
   };
 }
 

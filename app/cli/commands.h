@@ -10,5 +10,6 @@ int runBench(const QStringList& args, Streams& io);
 int runRun(const QStringList& args, Streams& io);
 int runTrack(const QStringList& args, Streams& io);
 int runCalibrate(const QStringList& args, Streams& io);
+int runScore(const QStringList& args, Streams& io);
 
 }  // namespace microsim::cli

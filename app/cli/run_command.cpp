@@ -4,6 +4,7 @@
 // the events and the per-stage step times (median, p99, max).
 #include "cli/commands.h"
 
+#include "cli/recording_text.h"
 #include "cli/spring_scene_input.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
@@ -75,29 +76,6 @@ QString eventText(const sim::SceneEvent& e) {
       return Cli::tr("suture slips out of a pierce");
     case K::InputRejected:
       return Cli::tr("input frame rejected");
-  }
-  return {};
-}
-
-QString recordingErrorText(sim::RecordingError e) {
-  using E = sim::RecordingError;
-  switch (e) {
-    case E::None:
-      return {};
-    case E::CannotOpen:
-      return Cli::tr("cannot open the recording");
-    case E::CannotWrite:
-      return Cli::tr("cannot write the recording");
-    case E::NotARecording:
-      return Cli::tr("not a microsim recording");
-    case E::UnsupportedVersion:
-      return Cli::tr("recording from a newer version");
-    case E::Truncated:
-      return Cli::tr("unfinished recording (no end record)");
-    case E::ChecksumMismatch:
-      return Cli::tr("damaged recording (checksum mismatch)");
-    case E::Malformed:
-      return Cli::tr("damaged recording (malformed frame)");
   }
   return {};
 }

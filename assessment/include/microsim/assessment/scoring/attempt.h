@@ -42,6 +42,7 @@ struct MotionSample {
 /// A vessel (or one end of a severed vessel) as the pierce metrics need it.
 struct VesselGeometry {
   int vessel = -1;                          ///< index into SceneDef::vessels
+  int object = -1;                          ///< tissue object; a severed vessel's ends share it
   int end = -1;                             ///< 0 or 1 for a severed vessel's ends, else -1
   sim::Vec3 axis = sim::Vec3::UnitX();      ///< unit, from the clamped end to the cut end
   sim::Vec3 cutCentre = sim::Vec3::Zero();  ///< centre of the cut-end ring at rest (mm)

@@ -25,6 +25,7 @@ struct PierceMetrics {
   int exit = -1;                 ///< index of the exit, -1 when the tip never came out
   double time = 0.0;             ///< s, the entry's
   int vessel = -1;               ///< index into SceneDef::vessels
+  int object = -1;               ///< tissue object (a severed vessel's ends share it)
   int end = -1;                  ///< severed vessel end (0/1), -1 otherwise
   sim::VesselSurface entrySurface = sim::VesselSurface::NotAVessel;
   sim::VesselSurface exitSurface = sim::VesselSurface::NotAVessel;
