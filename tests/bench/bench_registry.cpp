@@ -1,6 +1,7 @@
 #include "bench_report.h"
 #include "collision_bench.h"
 #include "scene_bench.h"
+#include "soak_bench.h"
 #include "suture_bench.h"
 #include "tissue_benches.h"
 
@@ -15,6 +16,7 @@ const std::vector<BenchEntry>& benchRegistry() {
       {"suture", "suture step time and max stretch vs links (50-2000), ftl (paper) vs direct", runSuture},
       {"collision", "sphere/AABB trees: build, maintenance, query vs distance, against FCL", runCollision},
       {"scene", "scene step time by stage (median, p99) over one full stitch", runScene},
+      {"soak", "30 simulated minutes of the default scene: memory and step time along it", runSoak},
   };
   return entries;
 }

@@ -1,0 +1,138 @@
+// `bench soak`: one long simulated session, to show that nothing grows or drifts. The
+// shipped stitch recording (resources/recordings/stitch.msrec) is looped on
+// resources/scenes/anastomosis.json at the scene's 100 Hz for 30 simulated minutes
+// (180,000 steps; 3 minutes with --quick) in ONE scene: each loop's frames are shifted in
+// time, and the hands jump back to where the recording starts, which tugs the needle and
+// suture as a trainee's restart would. Every simulated minute the process's resident set
+// (/proc/self/statm) and the step-time percentiles of that minute are sampled. The figures
+// that matter: resident memory at the end against the first sample (flat = the same within
+// allocator noise), the p99 step time of the last minute against the first, and that no
+// state went non-finite.
+#include "soak_bench.h"
+
+#include "microsim/sim/scene/recording.h"
+#include "microsim/sim/scene/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+#include <variant>
+#include <vector>
+
+namespace microsim::bench {
+
+namespace {
+
+const std::string kRoot = MICROSIM_SOURCE_DIR;
+
+double residentMiB() {
+  std::ifstream statm("/proc/self/statm");
+  long pagesTotal = 0;
+  long pagesResident = 0;
+  statm >> pagesTotal >> pagesResident;
+  return static_cast<double>(pagesResident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double quantileMs(std::vector<double> s, double q) {
+  if (s.empty()) return 0.0;
+  std::sort(s.begin(), s.end());
+  const std::size_t i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(s.size()))) - 1;
+  return 1e3 * s[std::min(i, s.size() - 1)];
+}
+
+bool finiteState(const sim::Scene& scene) {
+  if (!scene.tissueState().x.allFinite() || !scene.tissueState().v.allFinite()) return false;
+  const auto* suture = scene.sutureState();
+  return suture == nullptr || suture->x.allFinite();
+}
+
+}  // namespace
+
+BenchReport runSoak(const BenchOptions& options) {
+  BenchReport report;
+  sim::SceneDefLoad load = sim::loadSceneDef(kRoot + "/resources/scenes/anastomosis.json");
+  sim::Recording rec;
+  if (!std::holds_alternative<sim::SceneDef>(load) ||
+      !sim::readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok() || rec.frames.empty()) {
+    report.rows.push_back({"soak", "setup", "scene or recording unreadable", 1.0, "error", {}, {}, {}});
+    return report;
+  }
+  sim::Scene scene(std::get<sim::SceneDef>(std::move(load)));
+
+  const double minutes = options.quick ? 3.0 : 30.0;
+  const int stepsPerMinute = static_cast<int>(std::lround(60.0 / scene.dt()));
+  const int totalSteps = static_cast<int>(minutes) * stepsPerMinute;
+  const double loopLength = rec.frames.back().time + scene.dt();
+
+  BenchPlot memory{"soak: resident memory over the session", "simulated minute", "MiB", false, false, {}};
+  BenchPlot p99{"soak: step time per simulated minute", "simulated minute", "ms", false, false, {}};
+  BenchCurve rss{"resident set", {}, {}};
+  BenchCurve p50Curve{"median", {}, {}};
+  BenchCurve p99Curve{"p99", {}, {}};
+
+  std::vector<double> minute;
+  std::vector<double> all;
+  minute.reserve(static_cast<std::size_t>(stepsPerMinute));
+  all.reserve(static_cast<std::size_t>(totalSteps));
+  int nonFinite = 0;
+  int rejected = 0;
+  double firstRss = 0.0;
+  double peakRss = 0.0;
+  double firstP99 = 0.0;
+  double lastP99 = 0.0;
+  for (int k = 0; k < totalSteps; ++k) {
+    const std::size_t n = rec.frames.size();
+    sim::InputFrame frame = rec.frames[static_cast<std::size_t>(k) % n];
+    frame.time += loopLength * static_cast<double>(static_cast<std::size_t>(k) / n);
+    const sim::StepReport r = scene.step(frame);
+    if (r.inputRejected) ++rejected;
+    minute.push_back(r.times.total);
+    all.push_back(r.times.total);
+    if ((k + 1) % stepsPerMinute == 0) {
+      const double m = static_cast<double>((k + 1) / stepsPerMinute);
+      if (!finiteState(scene)) ++nonFinite;
+      const double mib = residentMiB();
+      const double q99 = quantileMs(minute, 0.99);
+      if (m == 1.0) {
+        firstRss = mib;
+        firstP99 = q99;
+      }
+      lastP99 = q99;
+      peakRss = std::max(peakRss, mib);
+      rss.x.push_back(m);
+      rss.y.push_back(mib);
+      p50Curve.x.push_back(m);
+      p50Curve.y.push_back(quantileMs(minute, 0.5));
+      p99Curve.x.push_back(m);
+      p99Curve.y.push_back(q99);
+      minute.clear();
+    }
+  }
+
+  const std::string label = std::to_string(static_cast<int>(minutes)) + " simulated min, " +
+                            std::to_string(totalSteps) + " steps";
+  const double lastRss = rss.y.empty() ? 0.0 : rss.y.back();
+  report.rows.push_back({"soak", label, "resident memory after 1 min", firstRss, "MiB", {}, {}, {}});
+  report.rows.push_back({"soak", label, "resident memory at the end", lastRss, "MiB", {}, {}, {}});
+  report.rows.push_back({"soak", label, "resident memory growth", lastRss - firstRss, "MiB", {}, {}, {}});
+  report.rows.push_back({"soak", label, "resident memory peak", peakRss, "MiB", {}, {}, {}});
+  report.rows.push_back({"soak", label, "step median", quantileMs(all, 0.5), "ms", {}, {}, {}});
+  report.rows.push_back({"soak", label, "step p99", quantileMs(all, 0.99), "ms", {}, {}, {}});
+  report.rows.push_back({"soak", label, "step max", quantileMs(all, 1.0), "ms", {}, {}, {}});
+  report.rows.push_back({"soak", label, "p99 of the first minute", firstP99, "ms", {}, {}, {}});
+  report.rows.push_back({"soak", label, "p99 of the last minute", lastP99, "ms", {}, {}, {}});
+  report.rows.push_back({"soak", label, "minutes ending in a non-finite state", static_cast<double>(nonFinite), "count", {}, {}, {}});
+  report.rows.push_back({"soak", label, "frames rejected", static_cast<double>(rejected), "count", {}, {}, {}});
+  report.rows.push_back({"soak", label, "pierce events", static_cast<double>(scene.pierces().size()), "count", {}, {}, {}});
+
+  memory.curves.push_back(std::move(rss));
+  p99.curves.push_back(std::move(p50Curve));
+  p99.curves.push_back(std::move(p99Curve));
+  report.plots.push_back(std::move(memory));
+  report.plots.push_back(std::move(p99));
+  return report;
+}
+
+}  // namespace microsim::bench
