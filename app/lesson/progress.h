@@ -1,0 +1,47 @@
+#pragma once
+// A lesson's steps against what has happened so far in an attempt. Steps tick off in order:
+// step i counts as done only once steps 0..i-1 are, and then as soon as its condition holds
+// on everything that happened since the attempt began (a grab before step 1 was reached still
+// counts for step 2).
+//
+// Facts, from the scene's events and pierces and the tissue's displacement:
+//   grab      the largest GrabTissue event's node count;
+//   stretch   the largest distance any tissue node has moved from where it started (mm);
+//   pierces   PierceEntry events (the needle entering a wall, from either side);
+//   stitches  completed passes: the needle went in and out of one end of a severed vessel
+//             and then in and out of the other; a new stitch begins with the next entry;
+//   target i  some pierce point (entry or exit) lies within the tolerance of guides[i].
+
+#include "lesson/lesson.h"
+
+#include "microsim/sim/scene/scene_events.h"
+
+#include <vector>
+
+namespace microsim::lesson {
+
+struct AttemptFacts {
+  int maxGrabNodes = 0;
+  double maxDisplacementMm = 0.0;  ///< mm
+  int pierceEntries = 0;
+  int stitches = 0;
+  std::vector<sim::PierceEvent> pierces;
+};
+
+/// Facts from the scene's events and pierces; `maxDisplacementMm` is the caller's (the
+/// snapshots carry the positions).
+AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
+                          const std::vector<sim::PierceEvent>& pierces, double maxDisplacementMm);
+
+/// Completed stitches in a pierce sequence (see the header comment).
+int countStitches(const std::vector<sim::PierceEvent>& pierces);
+
+bool conditionMet(const Condition& condition, const Lesson& lesson, const AttemptFacts& facts);
+
+/// How many steps are done, in order (0..steps.size()).
+int stepsDone(const Lesson& lesson, const AttemptFacts& facts);
+
+/// Which guides have been hit by some pierce within `toleranceMm`.
+std::vector<bool> guidesHit(const Lesson& lesson, const AttemptFacts& facts, double toleranceMm);
+
+}  // namespace microsim::lesson

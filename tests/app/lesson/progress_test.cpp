@@ -1,0 +1,88 @@
+#include "lesson/progress.h"
+
+#include "microsim/sim/scene/recording.h"
+#include "microsim/sim/scene/scene.h"
+
+#include <gtest/gtest.h>
+
+namespace microsim::lesson {
+namespace {
+
+const std::string kSource = MICROSIM_SOURCE_DIR;
+
+sim::PierceEvent pierce(int end, bool entry) {
+  sim::PierceEvent p;
+  p.end = end;
+  p.entry = entry;
+  return p;
+}
+
+TEST(LessonProgress, CountsAStitchOnlyWhenBothEndsArePassed) {
+  EXPECT_EQ(countStitches({}), 0);
+  EXPECT_EQ(countStitches({pierce(0, true), pierce(0, false)}), 0);
+  EXPECT_EQ(countStitches({pierce(0, true), pierce(0, false), pierce(1, true), pierce(1, false)}), 1);
+  // an exit without its entry is no pass; other tissue is ignored
+  EXPECT_EQ(countStitches({pierce(0, false), pierce(1, true), pierce(1, false), pierce(-1, true)}), 0);
+  EXPECT_EQ(countStitches({pierce(0, true), pierce(0, false), pierce(1, true), pierce(1, false),
+                           pierce(1, true), pierce(1, false), pierce(0, true), pierce(0, false)}),
+            2);
+}
+
+Lesson twoSteps() {
+  Lesson l;
+  l.steps.push_back({{}, {ConditionKind::Grab, 3, 0.0}});
+  l.steps.push_back({{}, {ConditionKind::Stretch, 1, 0.3}});
+  return l;
+}
+
+TEST(LessonProgress, StepsTickOffInOrder) {
+  const Lesson l = twoSteps();
+  AttemptFacts facts;
+  EXPECT_EQ(stepsDone(l, facts), 0);
+  facts.maxDisplacementMm = 0.5;  // the stretch alone does not skip the grab
+  EXPECT_EQ(stepsDone(l, facts), 0);
+  facts.maxGrabNodes = 2;
+  EXPECT_EQ(stepsDone(l, facts), 0);
+  facts.maxGrabNodes = 3;
+  EXPECT_EQ(stepsDone(l, facts), 2);
+}
+
+TEST(LessonProgress, FactsComeFromEvents) {
+  sim::SceneEvent grab;
+  grab.kind = sim::SceneEventKind::GrabTissue;
+  grab.count = 4;
+  sim::SceneEvent entry;
+  entry.kind = sim::SceneEventKind::PierceEntry;
+  const AttemptFacts f = collectFacts({grab, entry, entry}, {pierce(0, true)}, 0.2);
+  EXPECT_EQ(f.maxGrabNodes, 4);
+  EXPECT_EQ(f.pierceEntries, 2);
+  EXPECT_DOUBLE_EQ(f.maxDisplacementMm, 0.2);
+  EXPECT_EQ(f.stitches, 0);
+}
+
+// the shipped stitch recording completes lessons 02 and 03 (their targets sit where it pierces)
+TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
+  sim::Recording recording;
+  ASSERT_TRUE(sim::readRecording(kSource + "/resources/recordings/stitch.msrec", recording).ok());
+  for (const char* id : {"02_needle_entry", "03_single_stitch"}) {
+    const auto loaded = loadLesson(QStringLiteral(MICROSIM_SOURCE_DIR "/resources/lessons/%1.json").arg(QLatin1String(id)));
+    ASSERT_TRUE(std::holds_alternative<Lesson>(loaded)) << std::get<LessonError>(loaded).field.toStdString();
+    const Lesson& lesson = std::get<Lesson>(loaded);
+    auto opened = sim::openScene(lesson.scenePath.toStdString());
+    ASSERT_TRUE(std::holds_alternative<std::unique_ptr<sim::Scene>>(opened));
+    sim::Scene& scene = *std::get<std::unique_ptr<sim::Scene>>(opened);
+    int doneBeforeEnd = 0;
+    for (std::size_t i = 0; i < recording.frames.size(); ++i) {
+      scene.step(recording.frames[i]);
+      if (i + 1 == recording.frames.size() / 4)
+        doneBeforeEnd = stepsDone(lesson, collectFacts(scene.events(), scene.pierces(), 0.0));
+    }
+    const AttemptFacts facts = collectFacts(scene.events(), scene.pierces(), 0.0);
+    EXPECT_EQ(doneBeforeEnd, 0) << id;
+    EXPECT_EQ(stepsDone(lesson, facts), static_cast<int>(lesson.steps.size())) << id;
+    for (bool hit : guidesHit(lesson, facts, 0.1)) EXPECT_TRUE(hit) << id;
+  }
+}
+
+}  // namespace
+}  // namespace microsim::lesson
