@@ -66,9 +66,9 @@ QString insertScore(QSqlDatabase db, qint64 attemptId, const AttemptScore& score
   q.addBindValue(attemptId);
   q.addBindValue(score.score);
   q.addBindValue(score.passed ? 1 : 0);
-  q.addBindValue(QString::fromStdString(score.rubricId));
+  q.addBindValue(sql::text(score.rubricId));
   q.addBindValue(score.rubricVersion);
-  q.addBindValue(neverEvents.join(QLatin1Char(' ')));
+  q.addBindValue(sql::text(neverEvents.join(QLatin1Char(' '))));
   q.addBindValue(score.truncated ? 1 : 0);
   if (!q.exec()) return q.lastError().text();
 
@@ -79,14 +79,14 @@ QString insertScore(QSqlDatabase db, qint64 attemptId, const AttemptScore& score
     const MetricScore& m = score.metrics[i];
     q.addBindValue(attemptId);
     q.addBindValue(int(i));
-    q.addBindValue(QString::fromStdString(m.key));
+    q.addBindValue(sql::text(m.key));
     q.addBindValue(sql::real(m.value));
-    q.addBindValue(QString::fromStdString(m.unit));
+    q.addBindValue(sql::text(m.unit));
     q.addBindValue(m.target);
     q.addBindValue(m.tolerance);
     q.addBindValue(m.weight);
     q.addBindValue(m.points);
-    q.addBindValue(QString::fromStdString(m.feedback));
+    q.addBindValue(sql::text(m.feedback));
     if (!q.exec()) return q.lastError().text();
   }
 
@@ -121,7 +121,7 @@ std::optional<qint64> HistoryDatabase::beginAttempt(qint64 traineeId, const QStr
       "INSERT INTO attempts (trainee_id, lesson, mode, status, started_at, session) "
       "VALUES (?, ?, ?, 'in_progress', ?, ?) RETURNING id"));
   q.addBindValue(traineeId);
-  q.addBindValue(lesson);
+  q.addBindValue(sql::text(lesson));
   q.addBindValue(sql::modeText(mode));
   q.addBindValue(sql::now());
   q.addBindValue(session_);

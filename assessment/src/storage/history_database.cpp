@@ -57,8 +57,11 @@ DatabaseStatus failure(DatabaseError error, const QString& message) {
   return status;
 }
 
+// the owner's write bit and ours: root may write anything, but a file whose owner made it
+// read-only is meant to stay as it is
 bool writable(const QString& path) {
-  return QFile::permissions(path) & (QFileDevice::WriteOwner | QFileDevice::WriteUser);
+  const QFileDevice::Permissions p = QFile::permissions(path);
+  return (p & QFileDevice::WriteOwner) && (p & QFileDevice::WriteUser);
 }
 
 // true unless `pid` is certainly gone (no such process on this machine)
@@ -121,6 +124,7 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
       return status;
     }
   }
+  q.finish();  // an open read would lock the tables a migration drops
   session_ = QStringLiteral("%1@%2").arg(QCoreApplication::applicationPid()).arg(QSysInfo::machineHostName());
   path_ = info.absoluteFilePath();
   return finishOpen(db);
@@ -154,6 +158,7 @@ DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
     return status;
   }
   session_ = QStringLiteral("pg:%1").arg(q.value(0).toLongLong());
+  q.finish();
   path_ = url.toString(QUrl::RemovePassword);
   return finishOpen(db);
 }

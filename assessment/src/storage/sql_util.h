@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <optional>
 
 namespace microsim::assessment::sql {
@@ -52,6 +53,10 @@ inline AttemptStatus statusFromText(const QString& s) {
   if (s == QLatin1String("interrupted")) return AttemptStatus::Interrupted;
   return AttemptStatus::InProgress;
 }
+
+/// Never NULL: an empty string stays an empty string in a NOT NULL column.
+inline QString text(const QString& s) { return s.isNull() ? QStringLiteral("") : s; }
+inline QString text(const std::string& s) { return text(QString::fromStdString(s)); }
 
 /// NaN and infinities are stored as NULL.
 inline QVariant real(double v) {

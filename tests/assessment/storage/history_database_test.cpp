@@ -28,7 +28,8 @@ TEST(HistoryDatabase, NewFileGetsEveryMigrationInWalMode) {
   EXPECT_GE(status.schemaVersion, 1);
   EXPECT_TRUE(QFile::exists(path));
   EXPECT_EQ(tablesOf(db.connection()).toStdString(),
-            "attempt_metrics,attempts,schema_migrations,trainees");
+            "annotations,attempts,instructor_passwords,recordings,schema_migrations,score_metrics,"
+            "score_pierces,scores,setup_profiles,trainee_groups,trainees");
 
   QSqlQuery q(db.connection());
   ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA journal_mode")) && q.next());
@@ -137,6 +138,37 @@ TEST(Migrations, AFailingMigrationRollsBackWhole) {
   EXPECT_EQ(outcome.failedVersion, before + 1);
   EXPECT_EQ(schemaVersion(c), before);
   EXPECT_FALSE(tablesOf(c).contains(QStringLiteral("half_done")));
+}
+
+TEST(Migrations, PlaceholdersAndDriverOnlyStatementsFollowTheDriver) {
+  const QString sql = QStringLiteral(
+      "CREATE TABLE t (id @ID@, v @REAL@, b @BLOB@);\n"
+      "@SQLITE@ CREATE TRIGGER x BEFORE UPDATE ON t BEGIN SELECT RAISE(ABORT, 'no'); END;\n"
+      "@POSTGRESQL@ CREATE FUNCTION f() RETURNS trigger LANGUAGE plpgsql AS $$ BEGIN RETURN NEW; END $$;\n");
+  const QStringList lite = statementsFor(sql, Driver::SQLite);
+  ASSERT_EQ(lite.size(), 2);
+  EXPECT_EQ(lite[0].toStdString(), "CREATE TABLE t (id INTEGER PRIMARY KEY, v REAL, b BLOB)");
+  EXPECT_EQ(lite[1].toStdString(), "CREATE TRIGGER x BEFORE UPDATE ON t BEGIN SELECT RAISE(ABORT, 'no'); END");
+  const QStringList pg = statementsFor(sql, Driver::PostgreSQL);
+  ASSERT_EQ(pg.size(), 2);
+  EXPECT_EQ(pg[0].toStdString(), "CREATE TABLE t (id BIGSERIAL PRIMARY KEY, v DOUBLE PRECISION, b BYTEA)");
+  EXPECT_EQ(pg[1].toStdString(),
+            "CREATE FUNCTION f() RETURNS trigger LANGUAGE plpgsql AS $$ BEGIN RETURN NEW; END $$");
+}
+
+TEST(Migrations, FirstMigrationOnSqliteIsTheSessionOneSchema) {
+  // the text session-1 databases were created from, before placeholders
+  const QString before = QStringLiteral(
+      "CREATE TABLE trainees (\nid          INTEGER PRIMARY KEY,\nname        TEXT NOT NULL UNIQUE,\n"
+      "role        TEXT NOT NULL DEFAULT 'trainee' CHECK (role IN ('trainee', 'instructor')),\n"
+      "created_at  TEXT NOT NULL\n)");
+  const QStringList now = statementsFor(bundledMigrations().front().sql, Driver::SQLite);
+  ASSERT_EQ(now.size(), 4);
+  EXPECT_EQ(now[0].toStdString(), before.toStdString());
+  EXPECT_TRUE(now[1].contains(QStringLiteral("id              INTEGER PRIMARY KEY,")));
+  EXPECT_TRUE(now[1].contains(QStringLiteral("score           REAL,")));
+  EXPECT_TRUE(now[1].contains(QStringLiteral("recording       BLOB")));
+  EXPECT_TRUE(now[3].contains(QStringLiteral("value       REAL NOT NULL,")));
 }
 
 TEST(Migrations, SplitStatementsDropsCommentsAndKeepsMultilineStatements) {

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Runs a command with a throwaway PostgreSQL server on loopback, for the storage tests:
+#   bash scripts/postgres-for-tests.sh <command> [args...]
+# initdb into a temporary folder, start on a free port, export MICROSIM_TEST_PG_URL
+# (postgresql://microsim@127.0.0.1:PORT/microsim), run the command, then stop the server
+# and delete the folder, whatever the command's exit status (which this script returns).
+# PostgreSQL refuses to run as root, so as root the server runs as the `postgres` user.
+set -euo pipefail
+
+bindir=""
+for d in /usr/lib/postgresql/*/bin; do
+  [ -x "$d/initdb" ] && bindir="$d"
+done
+if [ -z "$bindir" ]; then
+  echo "postgres-for-tests: no PostgreSQL server found (install postgresql)" >&2
+  exit 1
+fi
+
+as_server=()
+if [ "$(id -u)" -eq 0 ]; then
+  as_server=(runuser -u postgres --)
+fi
+
+dir="$(mktemp -d /tmp/microsim-pg.XXXXXX)"
+chmod 755 "$dir"
+[ ${#as_server[@]} -gt 0 ] && chown postgres "$dir"
+
+# a free port: bind port 0 and read what the kernel gave
+port="$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+
+cleanup() {
+  "${as_server[@]}" "$bindir/pg_ctl" -D "$dir/data" -m immediate stop >/dev/null 2>&1 || true
+  rm -rf "$dir"
+}
+trap cleanup EXIT
+
+"${as_server[@]}" "$bindir/initdb" -D "$dir/data" -U microsim --auth=trust -E UTF8 --no-locale >"$dir/initdb.log" 2>&1 \
+  || { cat "$dir/initdb.log" >&2; exit 1; }
+"${as_server[@]}" "$bindir/pg_ctl" -D "$dir/data" -l "$dir/server.log" -w \
+  -o "-c listen_addresses=127.0.0.1 -p $port -k $dir -c fsync=off -c max_connections=200" start >/dev/null \
+  || { cat "$dir/server.log" >&2; exit 1; }
+"$bindir/createdb" -h 127.0.0.1 -p "$port" -U microsim microsim
+
+export MICROSIM_TEST_PG_URL="postgresql://microsim@127.0.0.1:$port/microsim"
+echo "postgres-for-tests: PostgreSQL on 127.0.0.1:$port ($MICROSIM_TEST_PG_URL)"
+status=0
+"$@" || status=$?
+exit "$status"

@@ -1,0 +1,245 @@
+// Roles, stored scores and hostile input, on SQLite and (when a server is given) PostgreSQL.
+#include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/history_database.h"
+
+#include "assessment/storage/history_backend.h"
+
+#include <QBuffer>
+#include <QSqlQuery>
+
+#include <cmath>
+#include <map>
+#include <limits>
+
+namespace microsim::assessment {
+namespace {
+
+using testing::HistoryBackend;
+
+AttemptScore sampleScore(double value) {
+  AttemptScore s;
+  s.score = value;
+  s.passed = value >= 70;
+  s.rubricId = "anastomosis";
+  s.rubricVersion = 3;
+  s.metrics.push_back({"entry_angle", 12.5, "deg", 0, 15, 2, 1.0, ""});
+  s.metrics.push_back({"path_length", std::numeric_limits<double>::quiet_NaN(), "mm", 300, 100, 1, 0.0,
+                       "path_length.missing"});
+  s.neverEvents = {"suture_break", "tear"};
+  PierceMetrics p;
+  p.entry = 0;
+  p.exit = 1;
+  p.time = 4.25;
+  p.vessel = 0;
+  p.entryAngleDeg = 8.0;
+  p.exitAngleDeg = std::numeric_limits<double>::quiet_NaN();
+  p.biteMm = 0.3;
+  p.fullThickness = true;
+  s.pierces.push_back(p);
+  return s;
+}
+
+class HistoryRoles : public HistoryBackend {
+ protected:
+  void SetUp() override {
+    HistoryBackend::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
+    openInto(db_);
+    ana_ = db_.addTrainee(QStringLiteral("Ana"), QStringLiteral("PGY-2")).value_or(0);
+    ben_ = db_.addTrainee(QStringLiteral("Ben")).value_or(0);
+    ines_ = db_.addInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")).value_or(0);
+    ASSERT_TRUE(ana_ && ben_ && ines_);
+    anaAttempt_ = db_.beginAttempt(ana_, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    benAttempt_ = db_.beginAttempt(ben_, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
+    ASSERT_TRUE(anaAttempt_ && benAttempt_);
+    ASSERT_TRUE(db_.finishAttempt(anaAttempt_, sampleScore(82), QByteArray("MSREC\0\x01\x02", 8)));
+    ASSERT_TRUE(db_.finishAttempt(benAttempt_, sampleScore(41), {}));
+  }
+
+  HistoryDatabase db_;
+  qint64 ana_ = 0, ben_ = 0, ines_ = 0, anaAttempt_ = 0, benAttempt_ = 0;
+};
+
+TEST_P(HistoryRoles, TraineeSeesOnlyOwnAttempts) {
+  const Viewer ana{ana_, Role::Trainee};
+  const QList<AttemptSummary> own = db_.attempts(ana);
+  ASSERT_EQ(own.size(), 1);
+  EXPECT_EQ(own[0].id, anaAttempt_);
+  EXPECT_EQ(own[0].status, AttemptStatus::Finished);
+  EXPECT_EQ(own[0].mode, AttemptMode::Test);
+  ASSERT_TRUE(own[0].score.has_value());
+  EXPECT_DOUBLE_EQ(*own[0].score, 82.0);
+  EXPECT_TRUE(own[0].passed);
+  EXPECT_EQ(own[0].rubricId.toStdString(), "anastomosis");
+  EXPECT_EQ(own[0].rubricVersion, 3);
+
+  // another trainee's list or attempt is refused, not silently empty
+  EXPECT_TRUE(db_.attempts(ana, ben_).isEmpty());
+  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(db_.attempt(ana, benAttempt_).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+  EXPECT_TRUE(db_.attempt(ana, anaAttempt_).has_value());
+}
+
+TEST_P(HistoryRoles, TraineeCannotClaimInstructorRoleNorAnnotate) {
+  EXPECT_TRUE(db_.attempts({ana_, Role::Instructor}).isEmpty());
+  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(db_.annotate({ana_, Role::Trainee}, anaAttempt_, QStringLiteral("great")).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(db_.annotate({ana_, Role::Instructor}, anaAttempt_, QStringLiteral("great")).has_value());
+  EXPECT_TRUE(db_.attempts({999999, Role::Instructor}).isEmpty());
+  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+}
+
+TEST_P(HistoryRoles, InstructorSeesAllAndAnnotates) {
+  const Viewer ines{ines_, Role::Instructor};
+  EXPECT_EQ(db_.attempts(ines).size(), 2);
+  EXPECT_EQ(db_.attempts(ines, ben_).size(), 1);
+  const auto note = db_.annotate(ines, benAttempt_, QStringLiteral("Bites too shallow at 3 o'clock."));
+  ASSERT_TRUE(note.has_value());
+  const auto detail = db_.attempt(ines, benAttempt_);
+  ASSERT_TRUE(detail.has_value());
+  ASSERT_EQ(detail->annotations.size(), 1);
+  EXPECT_EQ(detail->annotations[0].note.toStdString(), "Bites too shallow at 3 o'clock.");
+  EXPECT_EQ(detail->annotations[0].authorName.toStdString(), "Ines");
+  // the trainee reads the instructor's note on their own attempt
+  const auto seen = db_.attempt({ben_, Role::Trainee}, benAttempt_);
+  ASSERT_TRUE(seen.has_value());
+  EXPECT_EQ(seen->annotations.size(), 1);
+}
+
+TEST_P(HistoryRoles, FinishStoresScoreMetricsPiercesAndRecordingTogether) {
+  const auto d = db_.attempt({ines_, Role::Instructor}, anaAttempt_);
+  ASSERT_TRUE(d.has_value());
+  ASSERT_EQ(d->metrics.size(), 2);
+  EXPECT_EQ(d->metrics[0].key.toStdString(), "entry_angle");
+  EXPECT_DOUBLE_EQ(d->metrics[0].value, 12.5);
+  EXPECT_EQ(d->metrics[0].unit.toStdString(), "deg");
+  EXPECT_DOUBLE_EQ(d->metrics[0].tolerance, 15);
+  EXPECT_DOUBLE_EQ(d->metrics[0].weight, 2);
+  EXPECT_DOUBLE_EQ(d->metrics[0].points, 1.0);
+  EXPECT_TRUE(std::isnan(d->metrics[1].value));
+  EXPECT_EQ(d->metrics[1].feedback.toStdString(), "path_length.missing");
+  EXPECT_EQ(d->neverEvents, (QStringList{QStringLiteral("suture_break"), QStringLiteral("tear")}));
+  EXPECT_EQ(d->recording, QByteArray("MSREC\0\x01\x02", 8));
+
+  std::map<std::string, double> pierce;
+  for (const StoredPierceValue& v : d->pierces) {
+    EXPECT_EQ(v.pierce, 0);
+    pierce[v.key.toStdString()] = v.value;
+  }
+  EXPECT_DOUBLE_EQ(pierce.at("entry_angle_deg"), 8.0);
+  EXPECT_DOUBLE_EQ(pierce.at("time_s"), 4.25);
+  EXPECT_DOUBLE_EQ(pierce.at("full_thickness"), 1.0);
+  EXPECT_TRUE(std::isnan(pierce.at("exit_angle_deg")));
+}
+
+TEST_P(HistoryRoles, StoredScoreCannotChangeThroughApiOrSql) {
+  // a second finish is refused and changes nothing
+  EXPECT_FALSE(db_.finishAttempt(anaAttempt_, sampleScore(100), QByteArray("forged")));
+  EXPECT_EQ(db_.lastError().error, HistoryError::NotInProgress);
+  const auto d = db_.attempt({ana_, Role::Trainee}, anaAttempt_);
+  ASSERT_TRUE(d && d->summary.score);
+  EXPECT_DOUBLE_EQ(*d->summary.score, 82.0);
+  EXPECT_EQ(d->recording, QByteArray("MSREC\0\x01\x02", 8));
+
+  // the triggers refuse even raw SQL on the connection
+  QSqlQuery q(db_.connection());
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE scores SET score = 100")));
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE score_metrics SET points = 1")));
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE recordings SET data = data")));
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE attempts SET status = 'in_progress' WHERE status = 'finished'")));
+  q.prepare(QStringLiteral("INSERT INTO score_metrics (attempt_id, position, metric, value, unit, target, "
+                           "tolerance, weight, points, feedback) VALUES (?, 9, 'bonus', 1, '', 0, 0, 100, 1, '')"));
+  q.addBindValue(anaAttempt_);
+  EXPECT_FALSE(q.exec());
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT score FROM scores ORDER BY attempt_id")) && q.next());
+  EXPECT_DOUBLE_EQ(q.value(0).toDouble(), 82.0);
+}
+
+TEST_P(HistoryRoles, InstructorPasswordIsHashedAndChecked) {
+  EXPECT_EQ(db_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")), ines_);
+  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horsE")).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::WrongPassword);
+  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Ana"), QStringLiteral("correct horse")).has_value());
+  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Nobody"), QStringLiteral("correct horse")).has_value());
+  EXPECT_FALSE(db_.addInstructor(QStringLiteral("Short"), QStringLiteral("1234567")).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::InvalidInput);
+
+  QSqlQuery q(db_.connection());
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT algorithm, iterations, salt, hash FROM instructor_passwords")) && q.next());
+  EXPECT_EQ(q.value(0).toString().toStdString(), "pbkdf2-sha256");
+  EXPECT_EQ(q.value(1).toInt(), 1000);
+  EXPECT_EQ(q.value(2).toByteArray().size(), 16);
+  EXPECT_EQ(q.value(3).toByteArray().size(), 32);
+  EXPECT_FALSE(q.value(3).toByteArray().contains("correct horse"));
+}
+
+TEST_P(HistoryRoles, DuplicateAndEmptyNamesAreRefused) {
+  EXPECT_FALSE(db_.addTrainee(QStringLiteral("Ana")).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::NameTaken);
+  EXPECT_FALSE(db_.addTrainee(QStringLiteral("   ")).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::InvalidInput);
+  EXPECT_FALSE(db_.beginAttempt(424242, QStringLiteral("x"), AttemptMode::Learn).has_value());
+  EXPECT_EQ(db_.lastError().error, HistoryError::NotFound);
+}
+
+TEST_P(HistoryRoles, SqlInjectionThroughNamesAndNotesIsInert) {
+  const QString evil = QStringLiteral("x'); DROP TABLE attempts;--");
+  const QString evilGroup = QStringLiteral("g\"; DELETE FROM trainees; --");
+  const QString evilNote = QStringLiteral("'; UPDATE scores SET score = 100; --\n\u00e9\u4e2d");
+  const auto id = db_.addTrainee(evil, evilGroup);
+  ASSERT_TRUE(id.has_value());
+  const auto attemptId = db_.beginAttempt(*id, evil, AttemptMode::Learn);
+  ASSERT_TRUE(attemptId.has_value());
+  ASSERT_TRUE(db_.annotate({ines_, Role::Instructor}, *attemptId, evilNote).has_value());
+
+  const auto person = db_.person(*id);
+  ASSERT_TRUE(person.has_value());
+  EXPECT_EQ(person->name, evil);
+  EXPECT_EQ(person->group, evilGroup);
+  const auto d = db_.attempt({ines_, Role::Instructor}, *attemptId);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_EQ(d->summary.lesson, evil);
+  ASSERT_EQ(d->annotations.size(), 1);
+  EXPECT_EQ(d->annotations[0].note, evilNote);
+  EXPECT_EQ(db_.trainees().size(), 4);
+  EXPECT_EQ(db_.attempts({ines_, Role::Instructor}).size(), 3);
+  const auto ana = db_.attempt({ana_, Role::Trainee}, anaAttempt_);
+  ASSERT_TRUE(ana && ana->summary.score);
+  EXPECT_DOUBLE_EQ(*ana->summary.score, 82.0);
+}
+
+TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
+  ASSERT_TRUE(db_.addTrainee(QStringLiteral("Doe, \"JD\"\nJohn")).has_value());
+  const auto doe = db_.trainees();
+  qint64 doeId = 0;
+  for (const Trainee& t : doe)
+    if (t.name.startsWith(QLatin1String("Doe"))) doeId = t.id;
+  ASSERT_TRUE(db_.beginAttempt(doeId, QStringLiteral("02_stitch"), AttemptMode::Learn).has_value());
+
+  QBuffer all;
+  all.open(QIODevice::WriteOnly);
+  ASSERT_TRUE(db_.exportCsv({ines_, Role::Instructor}, all));
+  const QString text = QString::fromUtf8(all.data());
+  const QStringList records = text.split(QStringLiteral("\r\n"));
+  ASSERT_EQ(records.size(), 5);  // header, three attempts, and the empty rest after the last CRLF
+  EXPECT_EQ(records[0].toStdString(),
+            "attempt,trainee,group,lesson,mode,status,started,finished,score,passed,rubric,rubric_version");
+  EXPECT_TRUE(records[1].startsWith(QStringLiteral("%1,Ana,PGY-2,01_bite,test,finished,").arg(anaAttempt_)));
+  EXPECT_TRUE(records[1].endsWith(QStringLiteral(",82,1,anastomosis,3")));
+  EXPECT_TRUE(records[3].contains(QStringLiteral(",\"Doe, \"\"JD\"\"\nJohn\",,02_stitch,learn,in_progress,")));
+  EXPECT_TRUE(records[4].isEmpty());
+
+  QBuffer own;
+  own.open(QIODevice::WriteOnly);
+  ASSERT_TRUE(db_.exportCsv({ben_, Role::Trainee}, own));
+  EXPECT_EQ(QString::fromUtf8(own.data()).count(QStringLiteral("\r\n")), 2);
+  EXPECT_FALSE(own.data().contains("Ana"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, HistoryRoles, ::testing::Values(Driver::SQLite, Driver::PostgreSQL),
+                         testing::backendName);
+
+}  // namespace
+}  // namespace microsim::assessment
