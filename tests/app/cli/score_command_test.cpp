@@ -1,0 +1,161 @@
+// `microsim-cli score` as a user runs it: the shipped stitch scores the pinned value with
+// the single-stitch rubric (table and JSON), the scene comes from the recording's metadata
+// when it names one, --db stores the attempt, and bad rubrics, recordings and arguments
+// fail with a message naming the problem.
+#include "support/cli_runner.h"
+
+#include "microsim/assessment/storage/history_database.h"
+#include "microsim/sim/scene/recording.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using microsim::testing::CliRun;
+using microsim::testing::runCli;
+
+const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
+const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
+const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
+const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
+// tests/assessment/scoring/attempt_test.cpp holds the same value
+constexpr double kStitchScore = 66.3763863538384;
+
+QJsonObject readJson(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) return {};
+  return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+CliRun score(const QStringList& extra) {
+  return runCli(QStringList{QStringLiteral("score"), QStringLiteral("--rubric"), kRubric} + extra);
+}
+
+TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
+  QTemporaryDir dir;
+  const QString out = dir.filePath(QStringLiteral("score.json"));
+  const CliRun r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+                          QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("66.4"))) << r.out.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("entry_angle.too_oblique"))) << r.out.toStdString();
+  const QJsonObject doc = readJson(out);
+  EXPECT_NEAR(doc.value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
+  EXPECT_FALSE(doc.value(QStringLiteral("passed")).toBool());
+  EXPECT_FALSE(doc.value(QStringLiteral("truncated")).toBool());
+  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("id")).toString(),
+            QStringLiteral("03_single_stitch"));
+  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("version")).toInt(), 1);
+  const QJsonArray metrics = doc.value(QStringLiteral("metrics")).toArray();
+  ASSERT_EQ(metrics.size(), 9);
+  for (const QJsonValue& m : metrics)
+    for (const char* field : {"key", "value", "unit", "target", "points", "feedback"})
+      EXPECT_TRUE(m.toObject().contains(QLatin1String(field))) << field;
+  EXPECT_EQ(doc.value(QStringLiteral("pierces")).toArray().size(), 2);
+
+  // the same every run
+  const QString again = dir.filePath(QStringLiteral("again.json"));
+  ASSERT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+                   QStringLiteral("--json"), again})
+                .exitCode,
+            0);
+  EXPECT_EQ(readJson(again).value(QStringLiteral("score")).toDouble(), doc.value(QStringLiteral("score")).toDouble());
+}
+
+TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
+  // the shipped stitch names no scene
+  CliRun r = score({QStringLiteral("--recording"), kStitch});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("--scene"))) << r.err.toStdString();
+
+  // a copy whose metadata names it scores the same
+  QTemporaryDir dir;
+  microsim::sim::Recording rec;
+  ASSERT_TRUE(microsim::sim::readRecording(kStitch.toStdString(), rec).ok());
+  rec.metadata = "{\"scene\": \"" + kScene.toStdString() + "\"}";
+  const auto bytes = microsim::sim::encodeRecording(rec);
+  const QString named = dir.filePath(QStringLiteral("named.msrec"));
+  QFile f(named);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size()));
+  f.close();
+  const QString out = dir.filePath(QStringLiteral("named.json"));
+  r = score({QStringLiteral("--recording"), named, QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_NEAR(readJson(out).value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
+
+  // a truncated copy scores what it holds and says so
+  const QString cut = dir.filePath(QStringLiteral("cut.msrec"));
+  QFile c(cut);
+  ASSERT_TRUE(c.open(QIODevice::WriteOnly));
+  c.write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size() / 2));
+  c.close();
+  const QString cutOut = dir.filePath(QStringLiteral("cut.json"));
+  r = score({QStringLiteral("--recording"), cut, QStringLiteral("--json"), cutOut});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("unfinished"))) << r.err.toStdString();
+  EXPECT_TRUE(readJson(cutOut).value(QStringLiteral("truncated")).toBool());
+}
+
+TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {
+  QTemporaryDir dir;
+  const QString db = dir.filePath(QStringLiteral("history.sqlite"));
+  const QString out = dir.filePath(QStringLiteral("score.json"));
+  const CliRun r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+                          QStringLiteral("--db"), db, QStringLiteral("--trainee"), QStringLiteral("Ada"),
+                          QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  const qint64 id = static_cast<qint64>(readJson(out).value(QStringLiteral("attempt_id")).toDouble());
+  EXPECT_GT(id, 0);
+
+  microsim::assessment::HistoryDatabase history;
+  ASSERT_TRUE(history.open(db).ok());
+  qint64 ada = 0;
+  for (const auto& t : history.trainees())
+    if (t.name == QStringLiteral("Ada")) ada = t.id;
+  ASSERT_GT(ada, 0);
+  const auto attempts = history.attempts({ada, microsim::assessment::Role::Trainee});
+  ASSERT_EQ(attempts.size(), 1);
+  EXPECT_EQ(attempts[0].id, id);
+  EXPECT_EQ(attempts[0].lesson, QStringLiteral("03_single_stitch"));
+  EXPECT_EQ(attempts[0].rubricId, QStringLiteral("03_single_stitch"));
+  EXPECT_EQ(attempts[0].rubricVersion, 1);
+  ASSERT_TRUE(attempts[0].score.has_value());
+  EXPECT_NEAR(*attempts[0].score, kStitchScore, 1e-9);
+}
+
+TEST(ScoreCommand, BadInputsFailWithAMessage) {
+  QTemporaryDir dir;
+  const QString broken = dir.filePath(QStringLiteral("broken.json"));
+  QFile f(broken);
+  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+  f.write("{\"id\": \"x\", \"version\": 1, \"pass_mark\": 50,\n \"metrics\": [{\"key\": \"nope\"}]}");
+  f.close();
+  CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"),
+                     kScene, QStringLiteral("--rubric"), broken});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(broken + QStringLiteral(":2:"))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("metrics[0].key"))) << r.err.toStdString();
+
+  r = score({QStringLiteral("--recording"), kScene, QStringLiteral("--scene"), kScene});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("not a microsim recording"))) << r.err.toStdString();
+
+  r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), dir.filePath(QStringLiteral("no.json"))});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("no.json"))) << r.err.toStdString();
+
+  EXPECT_EQ(runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch}).exitCode, 2);
+  EXPECT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--db"), dir.filePath(QStringLiteral("h.sqlite"))})
+                .exitCode,
+            2);
+  EXPECT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--mode"), QStringLiteral("exam")}).exitCode, 2);
+}
+
+}  // namespace
