@@ -25,8 +25,6 @@ dir="$(mktemp -d /tmp/microsim-pg.XXXXXX)"
 chmod 755 "$dir"
 [ ${#as_server[@]} -gt 0 ] && chown postgres "$dir"
 
-# a free port: bind port 0 and read what the kernel gave
-port="$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
 
 cleanup() {
   "${as_server[@]}" "$bindir/pg_ctl" -D "$dir/data" -m immediate stop >/dev/null 2>&1 || true
@@ -36,9 +34,22 @@ trap cleanup EXIT
 
 "${as_server[@]}" "$bindir/initdb" -D "$dir/data" -U microsim --auth=trust -E UTF8 --no-locale >"$dir/initdb.log" 2>&1 \
   || { cat "$dir/initdb.log" >&2; exit 1; }
-"${as_server[@]}" "$bindir/pg_ctl" -D "$dir/data" -l "$dir/server.log" -w \
-  -o "-c listen_addresses=127.0.0.1 -p $port -k $dir -c fsync=off -c max_connections=200" start >/dev/null \
-  || { cat "$dir/server.log" >&2; exit 1; }
+# a free port: a random one that nobody answers on; another program may still take it
+# before the server does, so a failed start tries the next
+started=0
+for attempt in 1 2 3 4 5; do
+  port=$((20000 + RANDOM % 40000))
+  if (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null; then continue; fi
+  if "${as_server[@]}" "$bindir/pg_ctl" -D "$dir/data" -l "$dir/server.log" -w \
+      -o "-c listen_addresses=127.0.0.1 -p $port -k $dir -c fsync=off -c max_connections=200" start >/dev/null; then
+    started=1
+    break
+  fi
+done
+if [ "$started" -ne 1 ]; then
+  cat "$dir/server.log" >&2
+  exit 1
+fi
 "$bindir/createdb" -h 127.0.0.1 -p "$port" -U microsim microsim
 
 export MICROSIM_TEST_PG_URL="postgresql://microsim@127.0.0.1:$port/microsim"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # README command 2: install, build, and run every test. GUI tests need a display, so the
-# whole suite runs under xvfb-run; ctest prints its summary and fails on any failure.
+# whole suite runs under xvfb-run, beside a PostgreSQL server that scripts/postgres-for-tests.sh
+# starts and stops; ctest prints its summary and fails on any failure.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$here/scripts/build.sh"
@@ -8,4 +9,6 @@ cd "$here"
 preset="${MICROSIM_PRESET:-release}"
 # a private runtime dir keeps Qt from warning, and test data out of the user's folders
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
-xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset "$preset" "$@"
+# the storage tests also run against a throwaway PostgreSQL server on loopback
+bash "$here/scripts/postgres-for-tests.sh" \
+  xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset "$preset" "$@"

@@ -13,6 +13,7 @@ std::vector<Command> commands() {
       {QStringLiteral("track"), Cli::tr("record what an OpenIGTLink tracker sends"), &runTrack},
       {QStringLiteral("calibrate"), Cli::tr("pivot calibration or tracker-to-scene registration from a file"), &runCalibrate},
       {QStringLiteral("score"), Cli::tr("score a recorded attempt with a rubric (and store it in the history)"), &runScore},
+      {QStringLiteral("db"), Cli::tr("the history database: migrate, backup, restore, export CSV, trainees"), &runDb},
   };
 }
 

@@ -11,5 +11,6 @@ int runRun(const QStringList& args, Streams& io);
 int runTrack(const QStringList& args, Streams& io);
 int runCalibrate(const QStringList& args, Streams& io);
 int runScore(const QStringList& args, Streams& io);
+int runDb(const QStringList& args, Streams& io);
 
 }  // namespace microsim::cli
