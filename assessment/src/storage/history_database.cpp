@@ -133,7 +133,7 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
 DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
   driver_ = Driver::PostgreSQL;
   const QUrl url(location, QUrl::StrictMode);
-  const QString name = url.path().mid(1);
+  const QString name = url.path(QUrl::FullyDecoded).mid(1);
   if (!url.isValid() || url.host().isEmpty() || name.isEmpty())
     return failure(DatabaseError::CannotOpen, url.toString(QUrl::RemovePassword));
   if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QPSQL")))
@@ -143,8 +143,8 @@ DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
   db.setHostName(url.host());
   db.setPort(url.port(5432));
   db.setDatabaseName(name);
-  db.setUserName(url.userName());
-  db.setPassword(url.password());
+  db.setUserName(url.userName(QUrl::FullyDecoded));
+  db.setPassword(url.password(QUrl::FullyDecoded));
   db.setConnectOptions(QStringLiteral("connect_timeout=10"));
   if (!db.open()) {
     const DatabaseStatus status = failure(DatabaseError::CannotOpen, db.lastError().text());

@@ -153,5 +153,15 @@ TEST(HistoryFiles, RestoreRefusesForeignAndNewerFilesAndKeepsTheHistory) {
   EXPECT_EQ(db.trainees()[0].name.toStdString(), "Ivy");
 }
 
+TEST(HistoryFiles, UnreachableServerOrBadUrlIsCannotOpen) {
+  HistoryDatabase db;
+  // port 1 on loopback: refused at once
+  EXPECT_EQ(db.open(QStringLiteral("postgresql://nobody@127.0.0.1:1/none")).error, DatabaseError::CannotOpen);
+  EXPECT_FALSE(db.isOpen());
+  EXPECT_EQ(db.open(QStringLiteral("postgresql://127.0.0.1:5432/")).error, DatabaseError::CannotOpen);
+  EXPECT_TRUE(HistoryDatabase::isUrl(QStringLiteral("postgres://a@b/c")));
+  EXPECT_FALSE(HistoryDatabase::isUrl(QStringLiteral("/home/a/postgresql.sqlite")));
+}
+
 }  // namespace
 }  // namespace microsim::assessment
