@@ -93,7 +93,10 @@ bool HistoryDatabase::isUrl(const QString& location) {
 
 DatabaseStatus HistoryDatabase::open(const QString& location) {
   close();
-  return isUrl(location) ? openPostgres(location) : openSqlite(location);
+  // the connection is removed only once the opening functions' handles to it are gone
+  const DatabaseStatus status = isUrl(location) ? openPostgres(location) : openSqlite(location);
+  if (!status.ok()) close();
+  return status;
 }
 
 DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
@@ -110,7 +113,6 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
   db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=2000"));
   if (!db.open()) {
     const DatabaseStatus status = failure(classify(db.lastError()), db.lastError().text());
-    close();
     return status;
   }
 
@@ -120,7 +122,6 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
                                 "PRAGMA synchronous = NORMAL", "SELECT count(*) FROM sqlite_master"}) {
     if (!q.exec(QString::fromLatin1(statement))) {
       const DatabaseStatus status = failure(classify(q.lastError()), q.lastError().text());
-      close();
       return status;
     }
   }
@@ -148,13 +149,11 @@ DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
   db.setConnectOptions(QStringLiteral("connect_timeout=10"));
   if (!db.open()) {
     const DatabaseStatus status = failure(DatabaseError::CannotOpen, db.lastError().text());
-    close();
     return status;
   }
   QSqlQuery q(db);
   if (!q.exec(QStringLiteral("SELECT pg_backend_pid()")) || !q.next()) {
     const DatabaseStatus status = failure(DatabaseError::CannotOpen, q.lastError().text());
-    close();
     return status;
   }
   session_ = QStringLiteral("pg:%1").arg(q.value(0).toLongLong());
@@ -171,7 +170,6 @@ DatabaseStatus HistoryDatabase::finishOpen(QSqlDatabase& db) {
     status.error = outcome.result == MigrationResult::NewerSchema ? DatabaseError::NewerSchema
                                                                   : DatabaseError::MigrationFailed;
     status.driverMessage = outcome.driverMessage;
-    close();
     return status;
   }
   interruptOrphanedAttempts();
