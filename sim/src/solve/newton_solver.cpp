@@ -14,8 +14,10 @@
 //  - every iteration the boundary B (free nodes next to R, outside it) is checked; nodes of
 //    B whose |f_i| exceeds the threshold join R with 2^g further layers (g = growths so far),
 //    so that a wave crossing L levels costs O(log L) growths;
-//  - a region over half the free nodes takes them all (it saves little, and a region
-//    that stays the same keeps its multigrid hierarchy from cycle to cycle);
+//  - a region over half the free nodes takes them all, in node order (it saves little, and
+//    a region that is always the same list keeps its multigrid hierarchy from cycle to
+//    cycle; the hierarchies of the last two regions are kept, so a pull that comes and goes
+//    between steps, changing the free nodes, does not rebuild one every step);
 //  - nodes outside R ∪ B keep the forces they had, which the previous solve left below
 //    the threshold, so max over R ∪ B is the residual of the whole mesh.
 // The threshold is the budget's residual tolerance times forceScale. Nodes outside R are
@@ -27,6 +29,7 @@
 #include "solve/solvers.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -39,6 +42,15 @@ constexpr int kMultigridNodes = 2000;
 /// CG iterations above which the multigrid hierarchy is rebuilt for the next step.
 constexpr int kRebuildIterations = 25;
 
+/// A multigrid hierarchy and what it was built for.
+struct Hierarchy {
+  AggregationMultigrid multigrid;
+  const SpringModel* model = nullptr;
+  int links = -1, alive = -1;
+  std::vector<int> region;
+  long lastUse = 0;
+};
+
 class NewtonSolver final : public TissueSolver {
  public:
   NewtonSolver(const SolverParams& params, bool reference)
@@ -50,12 +62,12 @@ class NewtonSolver final : public TissueSolver {
     lastX_.resize(3, 0);
     lastRegion_.clear();
     lastMovers_.clear();
-    multigridRegion_.clear();
+    for (Hierarchy& h : hierarchies_) h.region.clear();
   }
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
                     const SolveBudget& budgetIn) override {
-    Stopwatch clock(budgetIn.clock);
+    Stopwatch clock(budgetIn);
     SolveReport report;
     if (!validInput(model, state, controls)) {
       report.status = SolveStatus::InvalidInput;
@@ -153,7 +165,7 @@ class NewtonSolver final : public TissueSolver {
         break;
       }
       if (report.iterations >= budget.maxIterations) break;
-      if (clock.seconds() >= budget.maxSeconds) {
+      if (clock.expired()) {
         report.status = SolveStatus::TimeLimit;
         break;
       }
@@ -222,12 +234,14 @@ class NewtonSolver final : public TissueSolver {
     // a region over most of the mesh saves little: take all of it, once, so that it
     // (and its multigrid hierarchy) stays the same from cycle to cycle
     if (2 * static_cast<int>(region_.size()) > freeCount_ &&
-        static_cast<int>(region_.size()) < freeCount_)
+        static_cast<int>(region_.size()) < freeCount_) {
+      region_.clear();
       for (int i = 0; i < static_cast<int>(free_.size()); ++i)
-        if (free_[i] && local_[i] < 0) {
+        if (free_[i]) {
           local_[i] = static_cast<int>(region_.size());
           region_.push_back(i);
         }
+    }
   }
 
   /// Total force on node i (µN).
@@ -317,12 +331,14 @@ class NewtonSolver final : public TissueSolver {
     double eta = params_.linearTolerance;
     if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
     PcgResult pcg;
-    if (m >= kMultigridNodes && (!growing || m == freeCount_ || multigridFits(model))) {
+    Hierarchy* kept = m >= kMultigridNodes ? fittingHierarchy(model) : nullptr;
+    if (m >= kMultigridNodes && (!growing || m == freeCount_ || kept)) {
       // multigrid-preconditioned CG, the hierarchy kept while it serves (and not built
       // for a region that may still grow)
-      if (!multigridFits(model)) buildMultigrid(model, x);
-      pcg = solvePcg(system_, multigrid_, force_, direction_, eta, 300);
-      if (pcg.iterations > kRebuildIterations || !pcg.ok) multigridRegion_.clear();
+      if (!kept) kept = &buildMultigrid(model, x);
+      kept->lastUse = ++uses_;
+      pcg = solvePcg(system_, kept->multigrid, force_, direction_, eta, 300);
+      if (pcg.iterations > kRebuildIterations || !pcg.ok) kept->region.clear();
     } else {
       pcg = solvePcg(system_, force_, direction_, eta, std::max(50, 3 * m));
     }
@@ -357,21 +373,27 @@ class NewtonSolver final : public TissueSolver {
     return false;
   }
 
-  /// True when the kept hierarchy was built for this model, topology and region.
-  bool multigridFits(const SpringModel& model) const {
-    return multigridModel_ == &model && multigridLinks_ == model.linkCount() &&
-           multigridAlive_ == model.aliveLinkCount() && multigridRegion_ == region_;
+  /// The kept hierarchy built for this model, topology and region, or null.
+  Hierarchy* fittingHierarchy(const SpringModel& model) {
+    for (Hierarchy& h : hierarchies_)
+      if (h.model == &model && h.links == model.linkCount() && h.alive == model.aliveLinkCount() &&
+          h.region == region_)
+        return &h;
+    return nullptr;
   }
 
-  void buildMultigrid(const SpringModel& model, const Points& x) {
+  /// Builds a hierarchy for the region in place of the least recently used one.
+  Hierarchy& buildMultigrid(const SpringModel& model, const Points& x) {
+    Hierarchy& h = hierarchies_[0].lastUse <= hierarchies_[1].lastUse ? hierarchies_[0] : hierarchies_[1];
     const int m = static_cast<int>(region_.size());
     Eigen::Matrix3Xd positions(3, m);
     for (int r = 0; r < m; ++r) positions.col(r) = x.col(region_[r]);
-    multigrid_.build(system_, positions);
-    multigridModel_ = &model;
-    multigridLinks_ = model.linkCount();
-    multigridAlive_ = model.aliveLinkCount();
-    multigridRegion_ = region_;
+    h.multigrid.build(system_, positions);
+    h.model = &model;
+    h.links = model.linkCount();
+    h.alive = model.aliveLinkCount();
+    h.region = region_;
+    return h;
   }
 
   SolverParams params_;
@@ -395,11 +417,9 @@ class NewtonSolver final : public TissueSolver {
   Eigen::VectorXd force_, direction_;
   Points start_;
   BlockSystem system_;
-  // the multigrid hierarchy and what it was built for
-  AggregationMultigrid multigrid_;
-  const SpringModel* multigridModel_ = nullptr;
-  int multigridLinks_ = -1, multigridAlive_ = -1;
-  std::vector<int> multigridRegion_;
+  // the multigrid hierarchies of the last two regions and what they were built for
+  std::array<Hierarchy, 2> hierarchies_;
+  long uses_ = 0;
 };
 
 }  // namespace

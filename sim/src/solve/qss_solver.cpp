@@ -27,7 +27,7 @@ class QssSolver final : public TissueSolver {
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
                     const SolveBudget& budget) override {
-    Stopwatch clock(budget.clock);
+    Stopwatch clock(budget);
     SolveReport report;
     if (!validInput(model, state, controls)) {
       report.status = SolveStatus::InvalidInput;
@@ -56,7 +56,7 @@ class QssSolver final : public TissueSolver {
     while (report.iterations < budget.maxIterations) {
       if (work >= kClockStride) {
         work = 0;
-        if (clock.seconds() >= budget.maxSeconds) {
+        if (clock.expired()) {
           report.status = SolveStatus::TimeLimit;
           break;
         }

@@ -16,7 +16,7 @@ class Rk4Solver final : public TissueSolver {
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
                     const SolveBudget& budget) override {
-    Stopwatch clock(budget.clock);
+    Stopwatch clock(budget);
     SolveReport report;
     if (!validInput(model, state, controls)) {
       report.status = SolveStatus::InvalidInput;
@@ -53,7 +53,7 @@ class Rk4Solver final : public TissueSolver {
         break;
       }
       if (report.iterations >= budget.maxIterations) break;
-      if (clock.seconds() >= budget.maxSeconds) {
+      if (clock.expired()) {
         report.status = SolveStatus::TimeLimit;
         break;
       }

@@ -5,6 +5,7 @@
 #include "microsim/sim/solve/solver.h"
 
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <vector>
 
@@ -27,13 +28,19 @@ bool allFinite(const Points& p);
 /// Largest alive-link base stiffness (g/s²).
 double maxStiffness(const SpringModel& model);
 
+/// A budget's clock: seconds since the solve started, and whether its time is up.
 class Stopwatch {
  public:
-  explicit Stopwatch(BudgetClock clock = BudgetClock::Wall) : clock_(clock), start_(now()) {}
+  explicit Stopwatch(const SolveBudget& budget)
+      : clock_(budget.clock), now_(budget.now), start_(now()),
+        deadline_((std::isnan(budget.since) ? start_ : budget.since) + budget.maxSeconds) {}
   double seconds() const { return now() - start_; }
+  /// The budget's check: reads the clock once.
+  bool expired() const { return now() >= deadline_; }
 
  private:
   double now() const {
+    if (now_) return now_();
     if (clock_ == BudgetClock::ThreadCpu) {
       timespec t{};
       clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -43,7 +50,9 @@ class Stopwatch {
   }
 
   BudgetClock clock_;
+  const ClockFunction& now_;
   double start_;
+  double deadline_;
 };
 
 /// Residuals above this multiple of the starting one (or of 1, whichever is larger) count

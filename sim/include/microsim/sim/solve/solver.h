@@ -8,6 +8,7 @@
 #include "microsim/sim/mesh/spring_model.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -23,12 +24,27 @@ enum class BudgetClock : std::uint8_t {
               ///< the machine does not change the figure (equal to Wall on an idle core)
 };
 
+/// A clock for time budgets: seconds (s) from any fixed origin, never decreasing.
+using ClockFunction = std::function<double()>;
+
 /// When a solve stops. Whichever limit is reached first ends it.
+///
+/// The time limit. Every solver reads its clock once when it starts, once before each
+/// iteration (the check: it stops with TimeLimit when now − since ≥ maxSeconds), and once at
+/// the end (SolveReport::seconds = end − start); it never reads it inside an iteration. So a
+/// solve overruns its limit by at most one iteration. (qss checks before a sweep once 256
+/// node updates have passed since its last check: for the rule, sweeps cut short by the
+/// cutout count together up to that many updates.)
 struct SolveBudget {
   int maxIterations = std::numeric_limits<int>::max();
-  double maxSeconds = std::numeric_limits<double>::infinity();  ///< wall-clock (s)
+  double maxSeconds = std::numeric_limits<double>::infinity();  ///< s on the clock below
   double residualTolerance = 0.0;  ///< stop once the relative residual is below this
   BudgetClock clock = BudgetClock::Wall;  ///< what maxSeconds and SolveReport::seconds measure
+  /// When set, the clock instead of `clock`: a scene shares its step's clock with the solve,
+  /// and tests run solvers on a fake one.
+  ClockFunction now;
+  /// The reading of the clock maxSeconds counts from (s); NaN: the solve's own start.
+  double since = std::numeric_limits<double>::quiet_NaN();
 };
 
 enum class SolveStatus : std::uint8_t {
