@@ -14,10 +14,8 @@ namespace microsim::sim {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 Eigen::Isometry3d poseOf(const HandInput& h) {
@@ -72,7 +70,8 @@ class TreeCollision final : public SceneCollision {
 
 }  // namespace
 
-Scene::Scene(SceneDef def, StepMode mode) : def_(std::move(def)), mode_(mode) {
+Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
+    : def_(std::move(def)), mode_(mode), clock_(clock ? std::move(clock) : ClockFunction(steadySeconds)) {
   SpringModel& tissue = def_.tissue.model;
   if (!tissue.finalized()) tissue.finalize();
   state_ = SpringState::atRest(tissue);
@@ -299,8 +298,48 @@ void Scene::assembleControls() {
     add(coupling_.nodes[static_cast<std::size_t>(c)], coupling_.targets.col(c));
 }
 
+void Scene::checkStretch(const std::vector<int>& moved) {
+  SpringModel& tissue = def_.tissue.model;
+  const TissueLimitsDef& limits = def_.limits;
+  if (overstretched_.size() != static_cast<std::size_t>(tissue.linkCount()))
+    overstretched_.assign(static_cast<std::size_t>(tissue.linkCount()), 0);
+
+  // the alive links of the nodes that moved, in index order
+  std::vector<int> links;
+  for (int i : moved)
+    for (int li : tissue.linksOf(i))
+      if (tissue.link(li).alive) links.push_back(li);
+  std::sort(links.begin(), links.end());
+  links.erase(std::unique(links.begin(), links.end()), links.end());
+
+  // an event where an over-stretch starts; tears collected
+  std::vector<int> torn;
+  for (int li : links) {
+    const Link& link = tissue.link(li);
+    if (!(link.rest > 0.0)) continue;
+    const double stretch = ((state_.x.col(link.b) - state_.x.col(link.a)).norm() - link.rest) / link.rest;
+    std::uint8_t& over = overstretched_[static_cast<std::size_t>(li)];
+    if (limits.overstretch > 0.0) {
+      const bool now = stretch > limits.overstretch;
+      if (now && !over)
+        addEvent(SceneEventKind::TissueOverStretch, -1, li, static_cast<int>(std::lround(1000.0 * stretch)));
+      over = now ? 1 : 0;
+    }
+    if (limits.tear > 0.0 && stretch > limits.tear) torn.push_back(li);
+  }
+
+  // tears are cuts: the links go, the solver's caches with them
+  if (torn.empty()) return;
+  for (int li : torn) {
+    tissue.removeLink(li);
+    overstretched_[static_cast<std::size_t>(li)] = 0;
+  }
+  addEvent(SceneEventKind::TissueTear, -1, torn.front(), static_cast<int>(torn.size()));
+  solver_->reset();
+}
+
 StepReport Scene::step(const InputFrame& in) {
-  const Clock::time_point start = Clock::now();
+  const double start = now();
   StepReport report;
   const std::size_t eventsBefore = events_.size();
   time_ += dt();
@@ -322,20 +361,20 @@ StepReport Scene::step(const InputFrame& in) {
   }
 
   // interactions: tools placed, grabs taken
-  Clock::time_point t0 = Clock::now();
+  double t0 = now();
   placeTools(frame);
   lastFrame_ = frame;
   for (int h = 0; h < kHandCount; ++h)
     if (grabDue_[static_cast<std::size_t>(h)]) grab(h);
-  report.times.interactions += secondsSince(t0);
+  report.times.interactions += now() - t0;
 
   // suture
-  t0 = Clock::now();
+  t0 = now();
   if (suture_) stepSuture();
-  report.times.suture = secondsSince(t0);
+  report.times.suture = now() - t0;
 
   // collision: trees refit where the tissue moved, then the needle's and the blade's tests
-  t0 = Clock::now();
+  t0 = now();
   std::vector<int> cutLinks;
   if (collision_) {
     if (suture_) applyCrossings();
@@ -348,38 +387,48 @@ StepReport Scene::step(const InputFrame& in) {
       cutLinks.insert(cutLinks.end(), cut.begin(), cut.end());
     }
   }
-  report.times.collision = secondsSince(t0);
+  report.times.collision = now() - t0;
 
   // interactions: cuts invalidate the solver's caches; the tissue's controls
-  t0 = Clock::now();
+  t0 = now();
   if (!cutLinks.empty()) solver_->reset();
   assembleControls();
-  report.times.interactions += secondsSince(t0);
+  report.times.interactions += now() - t0;
 
   // tissue
-  t0 = Clock::now();
+  t0 = now();
   SolveBudget budget;
   budget.maxIterations = def_.solver.iterations;
   budget.residualTolerance = def_.solver.tolerance;
-  if (mode_ == StepMode::RealTime)
-    budget.maxSeconds = std::max(0.0, def_.step.budgetMs * 1e-3 - secondsSince(start));
-  const Points before = collision_ ? state_.x : Points(3, 0);
+  if (mode_ == StepMode::RealTime) {
+    budget.now = clock_;
+    budget.since = start;
+    budget.maxSeconds = def_.step.budgetMs * 1e-3;
+  }
+  const bool limited = def_.limits.overstretch > 0.0 || def_.limits.tear > 0.0;
+  const Points before = collision_ || limited ? state_.x : Points(3, 0);
   report.tissue = solver_->solve(def_.tissue.model, state_, controls_, budget);
-  report.times.tissue = secondsSince(t0);
+  report.times.tissue = now() - t0;
 
-  // the trees follow the nodes that moved (counted as collision time)
-  if (collision_) {
-    t0 = Clock::now();
+  // the trees follow the nodes that moved (counted as collision time); their links are
+  // checked against the stretch limits (interactions)
+  if (collision_ || limited) {
+    t0 = now();
     std::vector<int> moved;
     for (int i = 0; i < static_cast<int>(state_.x.cols()); ++i)
       if (state_.x.col(i) != before.col(i)) moved.push_back(i);
-    collision_->maintain(moved, state_.x);
-    report.times.collision += secondsSince(t0);
+    if (collision_) collision_->maintain(moved, state_.x);
+    report.times.collision += now() - t0;
+    if (limited) {
+      t0 = now();
+      checkStretch(moved);
+      report.times.interactions += now() - t0;
+    }
   }
 
   ++steps_;
   report.events = static_cast<int>(events_.size() - eventsBefore);
-  report.times.total = secondsSince(start);
+  report.times.total = now() - start;
   return report;
 }
 

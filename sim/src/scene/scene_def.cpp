@@ -3,15 +3,11 @@
 #include "microsim/sim/mesh/merge.h"
 #include "microsim/sim/mesh/surface_import.h"
 #include "scene/scene_json_reader.h"
-#include "scene/spring_scene_locate.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 namespace microsim::sim {
@@ -43,6 +39,7 @@ class SceneReader : public JsonReader {
   bool scalpel(const json& v, const std::string& path, ScalpelDef& out);
   bool camera(const json& v, CameraDef& out);
   bool step(const json& v, StepDef& out);
+  bool limits(const json& v, TissueLimitsDef& out);
 
   std::string file_;
   std::string baseDir_;
@@ -339,9 +336,17 @@ bool SceneReader::step(const json& v, StepDef& out) {
          optPositive(v, path, "budget_ms", out.budgetMs);
 }
 
+bool SceneReader::limits(const json& v, TissueLimitsDef& out) {
+  const std::string path = "tissue";
+  return object(v, path, {"overstretch", "tear"}) &&
+         optNonNegative(v, path, "overstretch", out.overstretch) &&
+         optNonNegative(v, path, "tear", out.tear);
+}
+
 bool SceneReader::scene(const json& doc, SceneDef& out) {
   if (!object(doc, "",
-              {"version", "objects", "gravity", "solver", "tools", "camera", "step", "collision"}))
+              {"version", "objects", "gravity", "solver", "tools", "camera", "step", "tissue",
+               "collision"}))
     return false;
   if (const json* v = field(doc, "version")) {
     int version = 0;
@@ -354,6 +359,7 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
   if (const json* v = field(doc, "solver"); v && !solver(*v, out.solver)) return false;
   if (const json* v = field(doc, "camera"); v && !camera(*v, out.camera)) return false;
   if (const json* v = field(doc, "step"); v && !step(*v, out.step)) return false;
+  if (const json* v = field(doc, "tissue"); v && !limits(*v, out.limits)) return false;
   if (const json* v = field(doc, "collision")) {
     std::string tree = "aabb";
     if (!object(*v, "collision", {"tree"})) return false;
@@ -394,64 +400,18 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
 
 SceneDefLoad parseSceneDef(std::string_view text, const std::string& file,
                            const std::string& baseDir) {
-  const auto located = [&](SceneError e, std::size_t offset) {
-    e.file = file;
-    e.offset = std::min(offset, text.size());
-    std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
-    return e;
-  };
-
-  // syntax first: nlohmann reports the byte where parsing failed
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    SceneError err;
-    err.kind = SceneErrorKind::MalformedJson;
-    return located(err, e.byte > 0 ? e.byte - 1 : 0);
-  } catch (const json::out_of_range&) {
-    SceneError err;
-    err.kind = SceneErrorKind::NonFinite;
-    const std::optional<detail::JsonHit> hit = detail::findOverflowingNumber(text);
-    if (hit) err.field = hit->path;
-    return located(err, hit ? hit->offset : 0);
-  } catch (const std::exception&) {
-    return located(SceneError{}, 0);
-  }
-
-  // then meaning; the offending value is found again in the text by its path
+  // syntax first, then meaning; the offending value is found again in the text by its path
   SceneDef def;
   def.file = file;
   SceneReader reader(file, baseDir);
-  bool ok = false;
-  try {
-    ok = reader.scene(doc, def);
-  } catch (const std::exception&) {
-    SceneError err;
-    err.kind = SceneErrorKind::InvalidValue;
-    return located(err, 0);
-  }
-  if (ok) return def;
-  SceneError err = *reader.error();
-  err.file = file;
-  detail::locateSceneError(err, text);
-  return err;
+  return detail::parseSceneText(text, file, reader, std::move(def));
 }
 
 SceneDefLoad loadSceneDef(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || std::filesystem::is_directory(path, ec)) {
-    SceneError e;
-    e.kind = SceneErrorKind::FileNotFound;
-    e.file = path;
-    return e;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string base = std::filesystem::path(path).parent_path().string();
-  if (base.empty()) base = ".";
-  return parseSceneDef(buffer.str(), path, base);
+  std::variant<detail::SceneFileText, SceneError> file = detail::readSceneFile(path);
+  if (auto* e = std::get_if<SceneError>(&file)) return *e;
+  const auto& [text, base] = std::get<detail::SceneFileText>(file);
+  return parseSceneDef(text, path, base);
 }
 
 }  // namespace microsim::sim

@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <tuple>
 
 namespace microsim::sim::detail {
@@ -36,20 +40,41 @@ bool JsonReader::positive(const json& v, const std::string& path, double& out) {
   return out > 0.0 || fail(SceneErrorKind::InvalidValue, path);
 }
 
-bool JsonReader::intAtLeast(const json& v, const std::string& path, long long least, int& out) {
-  long long x = 0;
+bool JsonReader::integer(const json& v, const std::string& path, long long& out) {
   if (v.is_number_unsigned()) {
     const auto u = v.get<unsigned long long>();
     if (u > static_cast<unsigned long long>(INT_MAX)) return fail(SceneErrorKind::InvalidValue, path);
-    x = static_cast<long long>(u);
-  } else if (v.is_number_integer()) {
-    x = v.get<long long>();
-  } else {
-    return fail(SceneErrorKind::WrongType, path);
+    out = static_cast<long long>(u);
+    return true;
   }
-  if (x < least || x > INT_MAX)
-    return fail(x < 0 ? SceneErrorKind::NegativeValue : SceneErrorKind::InvalidValue, path);
+  if (!v.is_number_integer()) return fail(SceneErrorKind::WrongType, path);
+  out = v.get<long long>();
+  if (out < INT_MIN || out > INT_MAX) return fail(SceneErrorKind::InvalidValue, path);
+  return true;
+}
+
+bool JsonReader::intAtLeast(const json& v, const std::string& path, long long least, int& out) {
+  long long x = 0;
+  if (!integer(v, path, x)) return false;
+  if (x < least) return fail(x < 0 ? SceneErrorKind::NegativeValue : SceneErrorKind::InvalidValue, path);
   out = static_cast<int>(x);
+  return true;
+}
+
+bool JsonReader::nodeIndex(const json& v, const std::string& path, int nodes, int& out) {
+  long long x = 0;
+  if (!integer(v, path, x)) return false;
+  if (x < 0 || x >= nodes) return fail(SceneErrorKind::IndexOutOfRange, path);
+  out = static_cast<int>(x);
+  return true;
+}
+
+bool JsonReader::ints(const json& v, const std::string& path, std::size_t count, long long least,
+                      std::vector<int>& out) {
+  if (!v.is_array() || v.size() != count) return fail(SceneErrorKind::WrongType, path);
+  out.assign(count, 0);
+  for (std::size_t c = 0; c < count; ++c)
+    if (!intAtLeast(v[c], index(path, c), least, out[c])) return false;
   return true;
 }
 
@@ -139,6 +164,50 @@ void locateSceneError(SceneError& e, std::string_view text) {
   }
   e.offset = std::min(offset.value_or(0), text.size());
   std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
+}
+
+SceneError sceneErrorAt(SceneErrorKind kind, const std::string& file, std::string_view text,
+                        std::size_t offset) {
+  SceneError e;
+  e.kind = kind;
+  e.file = file;
+  e.offset = std::min(offset, text.size());
+  std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
+  return e;
+}
+
+std::variant<nlohmann::json, SceneError> parseSceneJson(std::string_view text,
+                                                        const std::string& file) {
+  // nlohmann reports the byte where parsing failed
+  try {
+    return nlohmann::json::parse(text.begin(), text.end());
+  } catch (const nlohmann::json::parse_error& e) {
+    return sceneErrorAt(SceneErrorKind::MalformedJson, file, text, e.byte > 0 ? e.byte - 1 : 0);
+  } catch (const nlohmann::json::out_of_range&) {
+    // a number beyond double range, e.g. 1e999: found again in the text
+    const std::optional<JsonHit> hit = findOverflowingNumber(text);
+    SceneError err = sceneErrorAt(SceneErrorKind::NonFinite, file, text, hit ? hit->offset : 0);
+    if (hit) err.field = hit->path;
+    return err;
+  } catch (const std::exception&) {
+    return sceneErrorAt(SceneErrorKind::MalformedJson, file, text, 0);
+  }
+}
+
+std::variant<SceneFileText, SceneError> readSceneFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  if (!in || std::filesystem::is_directory(path, ec)) {
+    SceneError e;
+    e.kind = SceneErrorKind::FileNotFound;
+    e.file = path;
+    return e;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  SceneFileText file{buffer.str(), std::filesystem::path(path).parent_path().string()};
+  if (file.baseDir.empty()) file.baseDir = ".";
+  return file;
 }
 
 }  // namespace microsim::sim::detail

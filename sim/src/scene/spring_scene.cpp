@@ -5,19 +5,15 @@
 #include "microsim/sim/mesh/merge.h"
 #include "microsim/sim/mesh/tetra_lattice.h"
 #include "microsim/sim/mesh/vessel.h"
-#include "scene/spring_scene_locate.h"
+#include "scene/scene_json_reader.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <initializer_list>
 #include <set>
-#include <sstream>
 #include <utility>
 
 namespace microsim::sim {
@@ -29,117 +25,20 @@ using json = nlohmann::json;
 // generator sizes beyond these would exhaust memory before they fail anywhere useful
 constexpr long long kMaxGeneratedNodes = 16'000'000;
 
-std::string key(const std::string& path, std::string_view name) {
-  return path.empty() ? std::string(name) : path + "." + std::string(name);
-}
-std::string index(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
 // one object's part before merging: its mesh, the nodes it fixes and controls (local)
 struct Part {
   SpringModel model;
   std::string name;
 };
 
-class Reader {
+// the spring-scene objects, through the typed reads all scene loaders share
+class Reader : public detail::JsonReader {
  public:
   explicit Reader(std::string baseDir) : baseDir_(std::move(baseDir)) {}
 
   bool scene(const json& doc, SpringScene& out);
-  const std::optional<SceneError>& error() const { return error_; }
 
  private:
-  bool fail(SceneErrorKind kind, const std::string& path) {
-    if (!error_) {
-      SceneError e;
-      e.kind = kind;
-      e.field = path;
-      error_ = e;
-    }
-    return false;
-  }
-
-  // typed readers: each checks the JSON type, finiteness and range, and names the path
-  bool number(const json& v, const std::string& path, double& out) {
-    if (!v.is_number()) return fail(SceneErrorKind::WrongType, path);
-    out = v.get<double>();
-    if (!std::isfinite(out)) return fail(SceneErrorKind::NonFinite, path);
-    return true;
-  }
-  bool nonNegative(const json& v, const std::string& path, double& out) {
-    if (!number(v, path, out)) return false;
-    return out >= 0.0 || fail(SceneErrorKind::NegativeValue, path);
-  }
-  bool positive(const json& v, const std::string& path, double& out) {
-    if (!nonNegative(v, path, out)) return false;
-    return out > 0.0 || fail(SceneErrorKind::InvalidValue, path);
-  }
-  bool integer(const json& v, const std::string& path, long long& out) {
-    if (v.is_number_unsigned()) {
-      const auto u = v.get<unsigned long long>();
-      if (u > static_cast<unsigned long long>(INT_MAX))
-        return fail(SceneErrorKind::InvalidValue, path);
-      out = static_cast<long long>(u);
-      return true;
-    }
-    if (!v.is_number_integer()) return fail(SceneErrorKind::WrongType, path);
-    out = v.get<long long>();
-    if (out < INT_MIN || out > INT_MAX) return fail(SceneErrorKind::InvalidValue, path);
-    return true;
-  }
-  bool intAtLeast(const json& v, const std::string& path, long long least, int& out) {
-    long long x = 0;
-    if (!integer(v, path, x)) return false;
-    if (x < least)
-      return fail(x < 0 ? SceneErrorKind::NegativeValue : SceneErrorKind::InvalidValue, path);
-    out = static_cast<int>(x);
-    return true;
-  }
-  bool nodeIndex(const json& v, const std::string& path, int nodes, int& out) {
-    long long x = 0;
-    if (!integer(v, path, x)) return false;
-    if (x < 0 || x >= nodes) return fail(SceneErrorKind::IndexOutOfRange, path);
-    out = static_cast<int>(x);
-    return true;
-  }
-  bool boolean(const json& v, const std::string& path, bool& out) {
-    if (!v.is_boolean()) return fail(SceneErrorKind::WrongType, path);
-    out = v.get<bool>();
-    return true;
-  }
-  bool vec3(const json& v, const std::string& path, Vec3& out) {
-    if (!v.is_array() || v.size() != 3) return fail(SceneErrorKind::WrongType, path);
-    for (int c = 0; c < 3; ++c)
-      if (!number(v[c], index(path, c), out[c])) return false;
-    return true;
-  }
-  bool ints(const json& v, const std::string& path, std::size_t count, long long least,
-            std::vector<int>& out) {
-    if (!v.is_array() || v.size() != count) return fail(SceneErrorKind::WrongType, path);
-    out.assign(count, 0);
-    for (std::size_t c = 0; c < count; ++c)
-      if (!intAtLeast(v[c], index(path, c), least, out[c])) return false;
-    return true;
-  }
-  bool object(const json& v, const std::string& path,
-              std::initializer_list<std::string_view> allowed) {
-    if (!v.is_object()) return fail(SceneErrorKind::WrongType, path);
-    for (const auto& [k, unused] : v.items()) {
-      (void)unused;
-      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
-        return fail(SceneErrorKind::UnknownField, key(path, k));
-    }
-    return true;
-  }
-  const json* field(const json& obj, std::string_view name) {
-    const auto it = obj.find(std::string(name));
-    return it == obj.end() ? nullptr : &*it;
-  }
-  bool required(const json& obj, const std::string& path, std::string_view name, const json*& out) {
-    out = field(obj, name);
-    return out != nullptr || fail(SceneErrorKind::MissingField, key(path, name));
-  }
   bool sizeLimit(long long nodes, const std::string& path) {
     return nodes <= kMaxGeneratedNodes || fail(SceneErrorKind::InvalidValue, path);
   }
@@ -155,7 +54,6 @@ class Reader {
   bool solver(const json& v, const std::string& path, SceneSolverSettings& out);
 
   std::string baseDir_;
-  std::optional<SceneError> error_;
 };
 
 bool Reader::springMesh(const json& o, const std::string& path, SpringModel& m) {
@@ -356,7 +254,7 @@ bool Reader::surface(const json& o, const std::string& path, SpringModel& m) {
   SurfaceImport imported = importSurfaceMesh(p.string(), opt);
   if (auto* e = std::get_if<MeshImportError>(&imported)) {
     fail(SceneErrorKind::MeshImport, key(path, "file"));
-    error_->meshError = *e;
+    error()->meshError = *e;
     return false;
   }
   m = std::move(std::get<SpringModel>(imported));
@@ -510,69 +408,16 @@ std::pair<int, int> lineColumnAt(std::string_view text, std::size_t offset) {
 
 SceneLoad parseSpringScene(std::string_view text, const std::string& file,
                            const std::string& baseDir) {
-  auto located = [&](SceneError e, std::size_t offset) {
-    e.file = file;
-    e.offset = std::min(offset, text.size());
-    std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
-    return e;
-  };
-
-  // syntax first: nlohmann reports the byte where parsing failed
-  json doc;
-  try {
-    doc = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    SceneError err;
-    err.kind = SceneErrorKind::MalformedJson;
-    return located(err, e.byte > 0 ? e.byte - 1 : 0);
-  } catch (const json::out_of_range&) {
-    // a number beyond double range, e.g. 1e999: find it ourselves
-    SceneError err;
-    err.kind = SceneErrorKind::NonFinite;
-    const std::optional<detail::JsonHit> hit = detail::findOverflowingNumber(text);
-    if (hit) err.field = hit->path;
-    return located(err, hit ? hit->offset : 0);
-  } catch (const std::exception&) {
-    return located(SceneError{}, 0);
-  }
-
-  // then meaning; the offending value is found again in the text by its path
-  SpringScene scene;
+  // syntax first, then meaning; the offending value is found again in the text by its path
   Reader reader(baseDir);
-  bool ok = false;
-  try {
-    ok = reader.scene(doc, scene);
-  } catch (const std::exception&) {
-    SceneError err;
-    err.kind = SceneErrorKind::InvalidValue;
-    return located(err, 0);
-  }
-  if (ok) return scene;
-  SceneError err = *reader.error();
-  std::string path = err.field;
-  std::optional<std::size_t> offset = detail::locateJsonPath(text, path);
-  while (!offset && !path.empty()) {
-    const std::size_t cut = path.find_last_of(".[");
-    path.resize(cut == std::string::npos ? 0 : cut);
-    offset = detail::locateJsonPath(text, path);
-  }
-  return located(err, offset.value_or(0));
+  return detail::parseSceneText(text, file, reader, SpringScene{});
 }
 
 SceneLoad loadSpringScene(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || std::filesystem::is_directory(path, ec)) {
-    SceneError e;
-    e.kind = SceneErrorKind::FileNotFound;
-    e.file = path;
-    return e;
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  std::string base = std::filesystem::path(path).parent_path().string();
-  if (base.empty()) base = ".";
-  return parseSpringScene(buffer.str(), path, base);
+  std::variant<detail::SceneFileText, SceneError> file = detail::readSceneFile(path);
+  if (auto* e = std::get_if<SceneError>(&file)) return *e;
+  const auto& [text, base] = std::get<detail::SceneFileText>(file);
+  return parseSpringScene(text, path, base);
 }
 
 }  // namespace microsim::sim

@@ -14,16 +14,24 @@
 //                 (pierce entry and exit; only while a forceps holds the needle: nothing
 //                 drives a loose needle through a wall), a scalpel's blade against the
 //                 links; after the tissue solve the trees are refit where nodes moved;
-//   tissue        the tissue solver runs with those controls.
+//   tissue        the tissue solver runs with those controls; then the links of the nodes
+//                 that moved are checked against the stretch limits (SceneDef::limits:
+//                 over-stretch events, tears removed like cuts), counted as interactions.
 // Only what the scene declares is built: no needle, no face tree and no suture stage; no
 // scalpel, no link tree.
 //
 // Determinism. In StepMode::Deterministic the tissue solve stops on the scene's iteration
 // limit and tolerance only, never on the clock, so the same scene and the same frames give
 // bit-identical states (hash()) on every run and build. StepMode::RealTime adds the wall-clock
-// budget: the tissue solve gets what the step budget leaves after the other stages, and the
-// solver checks its clock between iterations, so a step overruns its budget by at most one
-// tissue iteration (plus any stage that alone exceeds it).
+// budget: the tissue solve gets what the step budget leaves after the other stages (its
+// deadline is the step's start plus StepDef::budgetMs, on the scene's clock), and the solver
+// checks that clock between iterations, so a step's tissue solve stops at its first check
+// after the deadline: it overruns by at most one tissue iteration (plus any stage that alone
+// exceeds the budget).
+//
+// The clock. Stage times and the budget are read from one clock, the steady wall clock
+// unless the constructor is given another (a thread-CPU clock for benchmarks on a shared
+// machine, a fake one for tests).
 //
 // Rejected input (NaN, non-unit rotation, closure out of range, time going backwards) never
 // reaches the tools: the previous accepted frame is used again and an InputRejected event
@@ -50,8 +58,8 @@
 
 namespace microsim::sim {
 
-/// Wall-clock time of one step's stages (s). Reported, never used by the simulation in
-/// deterministic mode.
+/// Time of one step's stages (s) on the scene's clock. Reported, never used by the simulation
+/// in deterministic mode.
 struct StageTimes {
   double interactions = 0.0;
   double suture = 0.0;
@@ -73,7 +81,8 @@ class SceneCollision;
 
 class Scene {
  public:
-  explicit Scene(SceneDef def, StepMode mode = StepMode::Deterministic);
+  /// `clock`: seconds from any fixed origin, never decreasing; empty = the steady wall clock.
+  explicit Scene(SceneDef def, StepMode mode = StepMode::Deterministic, ClockFunction clock = {});
   ~Scene();
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
@@ -112,11 +121,15 @@ class Scene {
   void stepSuture();
   void applyCrossings();
   void assembleControls();
+  void checkStretch(const std::vector<int>& moved);
   PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const;
   void addEvent(SceneEventKind kind, int hand, int index, int count);
 
+  double now() const { return clock_(); }
+
   SceneDef def_;
   StepMode mode_;
+  ClockFunction clock_;
   SpringState state_;
   std::unique_ptr<TissueSolver> solver_;
   SpringControls controls_;
@@ -137,6 +150,8 @@ class Scene {
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> blade_;     // this step
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> bladeWas_;  // last step
   std::unique_ptr<SceneCollision> collision_;
+
+  std::vector<std::uint8_t> overstretched_;  ///< per link: above the limit at the last check
 
   std::optional<InputFrame> lastFrame_;
   double time_ = 0.0;

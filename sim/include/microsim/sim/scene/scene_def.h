@@ -13,6 +13,9 @@
 //              "needle": NEEDLE, "scalpel": SCALPEL},          each optional
 //    "camera": {"eye", "target", "up" ([x,y,z] mm), "fov_deg"},
 //    "step": {"rate_hz" (100), "budget_ms" (8)},
+//    "tissue": {"overstretch", "tear"},       stretch limits (l − r)/r, each off unless given:
+//              above "overstretch" a link raises SceneEventKind::TissueOverStretch once
+//              (again only after it fell back), above "tear" it is removed (TissueTear)
 //    "collision": {"tree": "aabb" (default) | "sphere"}}
 //
 // OBJECT is any object of a spring scene (spring_scene.h: spring-mesh, lattice, vessel,
@@ -117,6 +120,14 @@ struct StepDef {
   double budgetMs = 8.0;    ///< wall-clock budget of one step (ms), used by real-time stepping
 };
 
+/// Stretch limits of the tissue's links, for assessment; stretch = (l − r)/r, l the length
+/// and r the rest length (dimensionless). Checked after every step's tissue solve on the
+/// links of the nodes that moved; 0 turns a limit off.
+struct TissueLimitsDef {
+  double overstretch = 0.0;  ///< above it a link is over-stretched (an event), 0 = off
+  double tear = 0.0;         ///< above it a link tears (is removed, an event), 0 = off
+};
+
 enum class CollisionTree : std::uint8_t { Aabb, Sphere };
 
 struct SceneDef {
@@ -129,6 +140,7 @@ struct SceneDef {
   TissueSolverDef solver;
   CameraDef camera;
   StepDef step;
+  TissueLimitsDef limits;
   CollisionTree tree = CollisionTree::Aabb;
 };
 

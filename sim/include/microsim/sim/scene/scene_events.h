@@ -1,7 +1,7 @@
 #pragma once
 // What happened during an attempt, as data for assessment (DESIGN.md §Assessment) and for
 // `microsim-cli run`: grabs and releases, pierces with their geometry, cuts, suture breaks,
-// rejected input. The engine reports enums and numbers; words are the app's business.
+// rejected input, tissue over-stretch and tears. The engine reports enums and numbers; words are the app's business.
 //
 // Units: millimetres, seconds, degrees.
 
@@ -23,6 +23,13 @@ enum class SceneEventKind : std::uint8_t {
   SutureBreak,    ///< the suture broke at link `index`
   SuturePulledOut,///< the suture slid out of a pierce
   InputRejected,  ///< a frame was unusable (`rejection`); the previous one was used instead
+  /// a tissue link's stretch (l − r)/r rose above SceneDef::limits.overstretch: once when it
+  /// starts (`index` = the link, `count` = its stretch in per-mille, rounded), then nothing
+  /// for that link until it has fallen back to or below the threshold
+  TissueOverStretch,
+  /// links stretched above SceneDef::limits.tear were removed, like a cut (`index` = the
+  /// first, `count` = how many this step)
+  TissueTear,
 };
 
 /// Which surface of a vessel a pierce crossed.
