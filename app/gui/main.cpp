@@ -47,6 +47,14 @@ int main(int argc, char** argv) {
   parser.addOption(database);
   parser.process(app);
 
+  if (parser.isSet(screenshot)) {
+    QString error;
+    const QStringList files = microsim::gui::writeScreenshots(parser.value(screenshot), &error);
+    for (const QString& f : files) std::printf("%s\n", qPrintable(f));
+    if (files.isEmpty()) std::fprintf(stderr, "microsim: --screenshot failed: %s\n", qPrintable(error));
+    return files.isEmpty() ? 1 : 0;
+  }
+
   QString databasePath = parser.value(database);
   if (databasePath.isEmpty())
     databasePath = QSettings().value(microsim::gui::settings::databasePath(),
@@ -58,12 +66,7 @@ int main(int argc, char** argv) {
                  qPrintable(microsim::gui::MainWindow::describe(status, databasePath)),
                  qPrintable(status.driverMessage));
 
-  microsim::gui::MainWindow window(status, databasePath);
-  if (parser.isSet(screenshot)) {
-    const QStringList files = microsim::gui::writeScreenshots(window, parser.value(screenshot));
-    for (const QString& f : files) std::printf("%s\n", qPrintable(f));
-    return files.isEmpty() ? 1 : 0;
-  }
+  microsim::gui::MainWindow window(&history, status, databasePath);
   window.show();
   return QApplication::exec();
 }

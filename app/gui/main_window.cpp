@@ -1,38 +1,87 @@
 #include "gui/main_window.h"
 
 #include "gui/app_settings.h"
-#include "i18n/translations.h"
+#include "gui/pages/lesson_list_page.h"
+#include "gui/pages/results_page.h"
+#include "gui/pages/sign_in_page.h"
+#include "gui/settings/settings_dialog.h"
+#include "gui/settings/tunables.h"
+#include "gui/simulation_runner.h"
 #include "gui/viewport.h"
+#include "i18n/translations.h"
 
-#include <QActionGroup>
+#include "microsim/sim/scene/recording.h"
+
 #include <QApplication>
 #include <QCloseEvent>
+#include <QFileDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 
 namespace microsim::gui {
 
-MainWindow::MainWindow(const assessment::DatabaseStatus& database, const QString& databasePath,
-                       QWidget* parent)
-    : QMainWindow(parent) {
+MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::DatabaseStatus& database,
+                       const QString& databasePath, QWidget* parent)
+    : QMainWindow(parent), history_(history) {
   setWindowTitle(tr("microsim — micro-anastomosis trainer"));
-  viewport_ = new Viewport(this);
-  setCentralWidget(viewport_);
-  buildMenus();
+
+  // the pages
+  pages_ = new QStackedWidget(this);
+  signIn_ = new SignInPage(history_, pages_);
+  lessonList_ = new LessonListPage(history_, pages_);
+  attempt_ = new AttemptPage(history_, pages_);
+  results_ = new ResultsPage(pages_);
+  for (QWidget* page : std::initializer_list<QWidget*>{signIn_, lessonList_, attempt_, results_}) pages_->addWidget(page);
+  setCentralWidget(pages_);
+
+  std::vector<lesson::LessonError> errors;
+  lessons_ = lesson::loadLessons(lesson::lessonsDirectory(), &errors);
 
   databaseLabel_ = new QLabel(describe(database, databasePath), this);
+  userLabel_ = new QLabel(this);
+  statusBar()->addPermanentWidget(userLabel_);
   statusBar()->addPermanentWidget(databaseLabel_);
-  statusBar()->showMessage(tr("Drag to orbit the microscope, wheel to zoom."));
+  if (!errors.empty())
+    statusBar()->showMessage(tr("%n lesson file(s) could not be read; the first: %1 (%2)", "", static_cast<int>(errors.size()))
+                                 .arg(errors.front().file, errors.front().field));
+
+  connect(signIn_, &SignInPage::signedIn, this, [this](const assessment::Viewer& viewer, const QString& name) {
+    viewer_ = viewer;
+    userName_ = name;
+    userLabel_->setText(viewer.role == assessment::Role::Instructor ? tr("Instructor: %1").arg(name)
+                                                                     : tr("Trainee: %1").arg(name));
+    showLessons();
+  });
+  connect(lessonList_, &LessonListPage::startLesson, this, &MainWindow::startLesson);
+  connect(lessonList_, &LessonListPage::signOut, this, [this] {
+    viewer_ = {};
+    userName_.clear();
+    userLabel_->clear();
+    signIn_->refresh();
+    pages_->setCurrentWidget(signIn_);
+  });
+  connect(attempt_, &AttemptPage::finished, this, &MainWindow::showResults);
+  connect(attempt_, &AttemptPage::abandoned, this, &MainWindow::showLessons);
+  connect(results_, &ResultsPage::retry, this, [this] { startLesson(lastLesson_, lastMode_); });
+  connect(results_, &ResultsPage::back, this, &MainWindow::showLessons);
+
+  buildMenus();
 
   QSettings settings;
   restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());
   restoreState(settings.value(settings::windowState()).toByteArray());
 }
 
+MainWindow::~MainWindow() = default;
+
+Viewport* MainWindow::viewport() const { return attempt_->viewport(); }
+QWidget* MainWindow::currentPage() const { return pages_->currentWidget(); }
 QString MainWindow::databaseMessage() const { return databaseLabel_->text(); }
+QString MainWindow::language() const { return i18n::languageFromSettings(); }
 
 QString MainWindow::describe(const assessment::DatabaseStatus& status, const QString& path) {
   using assessment::DatabaseError;
@@ -51,38 +100,82 @@ QString MainWindow::describe(const assessment::DatabaseStatus& status, const QSt
       return tr("History unavailable: %1 was written by a newer microsim").arg(path);
     case DatabaseError::MigrationFailed:
       return tr("History unavailable: updating %1 failed; it was left as it was").arg(path);
+    case DatabaseError::ReadOnly:
+      return tr("History unavailable: %1 is read-only; it was left untouched").arg(path);
   }
   return {};
 }
 
 void MainWindow::buildMenus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
+  QAction* replay = file->addAction(tr("&Replay a recording into this attempt…"), this, &MainWindow::replayRecording);
+  replay->setObjectName(QStringLiteral("replayAction"));
   QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
   quit->setObjectName(QStringLiteral("quitAction"));
 
   QMenu* settingsMenu = menuBar()->addMenu(tr("&Settings"));
-  QMenu* language = settingsMenu->addMenu(tr("&Language"));
-  auto* group = new QActionGroup(this);
-  const QString current = QSettings().value(i18n::languageSettingKey()).toString();
-  const QStringList names = {tr("System default"), tr("English"), tr("German"), tr("Spanish")};
-  const QStringList codes = {QString(), QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("es")};
-  for (qsizetype i = 0; i < codes.size(); ++i) {
-    QAction* action = language->addAction(names[i]);
-    action->setCheckable(true);
-    action->setChecked(codes[i] == current);
-    group->addAction(action);
-    const QString code = codes[i];
-    connect(action, &QAction::triggered, this, [this, code] { chooseLanguage(code); });
-  }
+  QAction* preferences = settingsMenu->addAction(tr("&Preferences…"), this, &MainWindow::openSettings);
+  preferences->setShortcut(QKeySequence::Preferences);
+  preferences->setObjectName(QStringLiteral("settingsAction"));
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About microsim"), this, &MainWindow::showAbout);
 }
 
-void MainWindow::chooseLanguage(const QString& language) {
-  QSettings().setValue(i18n::languageSettingKey(), language);
-  statusBar()->showMessage(tr("The language changes at the next start."), 5000);
+void MainWindow::showLessons() {
+  attempt_->abandon();
+  lessonList_->show(lessons_, viewer_, userName_, language());
+  pages_->setCurrentWidget(lessonList_);
+}
+
+bool MainWindow::startLesson(int index, assessment::AttemptMode mode) {
+  if (index < 0 || index >= static_cast<int>(lessons_.size())) return false;
+  lastLesson_ = index;
+  lastMode_ = mode;
+  QString error;
+  if (!attempt_->begin(lessons_[static_cast<std::size_t>(index)], index, mode, viewer_, language(), &error)) {
+    QMessageBox::warning(this, tr("The lesson cannot start"), error);
+    return false;
+  }
+  pages_->setCurrentWidget(attempt_);
+  attempt_->startLive();
+  return true;
+}
+
+void MainWindow::showResults(const AttemptResult& result) {
+  const QString title = result.lessonIndex >= 0 && result.lessonIndex < static_cast<int>(lessons_.size())
+                            ? lessons_[static_cast<std::size_t>(result.lessonIndex)].title.in(language())
+                            : QString();
+  results_->show(result, title);
+  pages_->setCurrentWidget(results_);
+}
+
+void MainWindow::replayRecording() {
+  if (!attempt_->isActive()) {
+    statusBar()->showMessage(tr("Start a lesson first; the recording is then replayed into it."), 5000);
+    return;
+  }
+  const QString path = QFileDialog::getOpenFileName(this, tr("Replay a recording"), {}, tr("Recordings (*.msrec)"));
+  if (path.isEmpty()) return;
+  sim::Recording recording;
+  const sim::RecordingStatus status = sim::readRecording(path.toStdString(), recording);
+  if (!status.ok() && status.error != sim::RecordingError::Truncated) {
+    QMessageBox::warning(this, tr("Replay a recording"), tr("%1 is not a readable recording.").arg(path));
+    return;
+  }
+  attempt_->replay(std::move(recording.frames));
+}
+
+void MainWindow::openSettings() {
+  settings::SettingsDialog dialog(this);
+  const QString languageBefore = QSettings().value(i18n::languageSettingKey()).toString();
+  if (dialog.exec() != QDialog::Accepted) return;
+  attempt_->applyViewSettings();
+  if (QSettings().value(i18n::languageSettingKey()).toString() != languageBefore)
+    statusBar()->showMessage(tr("The language changes at the next start."), 5000);
+  else
+    statusBar()->showMessage(tr("Settings saved; the solver applies from the next attempt."), 5000);
 }
 
 void MainWindow::showAbout() {
@@ -93,6 +186,7 @@ void MainWindow::showAbout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  attempt_->abandon();
   QSettings settings;
   settings.setValue(settings::windowGeometry(), saveGeometry());
   settings.setValue(settings::windowState(), saveState());

@@ -1,36 +1,110 @@
 #include "gui/screenshots.h"
 
 #include "gui/main_window.h"
+#include "gui/pages/lesson_list_page.h"
+#include "gui/pages/results_page.h"
+#include "gui/pages/sign_in_page.h"
+#include "gui/settings/settings_dialog.h"
+#include "gui/simulation_runner.h"
 #include "gui/viewport.h"
 
+#include "microsim/sim/scene/recording.h"
+
+#include <QApplication>
 #include <QDir>
 #include <QEventLoop>
+#include <QListWidget>
 #include <QPixmap>
+#include <QPushButton>
+#include <QTemporaryDir>
 #include <QTimer>
 
 namespace microsim::gui {
 
 namespace {
 
-// spin the event loop until the viewport has drawn a frame (or a generous deadline passes)
-bool waitForFrame(Viewport& viewport) {
-  if (viewport.framesDrawn() > 0) return true;
+// runs the event loop until `signal` of `sender` fires, or a generous deadline passes
+template <typename Sender, typename Signal>
+bool waitFor(Sender* sender, Signal signal, int timeoutMs = 30000) {
   QEventLoop loop;
-  QObject::connect(&viewport, &Viewport::frameDrawn, &loop, &QEventLoop::quit);
-  QTimer::singleShot(10000, &loop, &QEventLoop::quit);
+  bool fired = false;
+  QObject::connect(sender, signal, &loop, [&] {
+    fired = true;
+    loop.quit();
+  });
+  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
   loop.exec();
-  return viewport.framesDrawn() > 0;
+  return fired;
+}
+
+// lets pending layout and paint events run
+void settle() {
+  for (int i = 0; i < 5; ++i) QApplication::processEvents();
+}
+
+bool save(QWidget& widget, const QString& file, QStringList& written) {
+  settle();
+  if (!widget.grab().save(file)) return false;
+  written << file;
+  return true;
 }
 
 }  // namespace
 
-QStringList writeScreenshots(MainWindow& window, const QString& directory) {
-  if (!QDir().mkpath(directory)) return {};
+QStringList writeScreenshots(const QString& directory, QString* error, int width, int height) {
+  auto fail = [error](const QString& why) {
+    if (error) *error = why;
+    return QStringList();
+  };
+  if (!QDir().mkpath(directory)) return fail(QApplication::translate("main", "cannot create %1").arg(directory));
+  const QDir out(directory);
+  QTemporaryDir scratch;
+  assessment::HistoryDatabase history;
+  const QString path = scratch.filePath(QStringLiteral("history.sqlite"));
+  const assessment::DatabaseStatus status = history.open(path);
+  if (!status.ok()) return fail(status.driverMessage);
+  for (const QString& name : {QStringLiteral("Alex Demo"), QStringLiteral("Maria Beispiel"), QStringLiteral("Sam Ejemplo")})
+    history.addTrainee(name, QStringLiteral("Residents 2026"));
+
+  MainWindow window(&history, status, path);
+  window.resize(width, height);
   window.show();
-  if (!waitForFrame(*window.viewport())) return {};
-  const QString file = QDir(directory).filePath(QStringLiteral("main-window.png"));
-  if (!window.grab().save(file)) return {};
-  return {file};
+  QStringList written;
+
+  // sign-in, then the lessons of the first trainee
+  if (!save(window, out.filePath(QStringLiteral("sign-in.png")), written)) return fail(QStringLiteral("sign-in"));
+  auto* list = window.signInPage()->findChild<QListWidget*>(QStringLiteral("traineeList"));
+  list->setCurrentRow(0);
+  window.signInPage()->findChild<QPushButton*>(QStringLiteral("signInButton"))->click();
+  window.lessonListPage()->selectRow(1);
+  if (!save(window, out.filePath(QStringLiteral("lessons.png")), written)) return fail(QStringLiteral("lessons"));
+
+  // lesson 2 in Learn mode, the shipped stitch replayed up to the first pierce
+  sim::Recording stitch;
+  const QString recording = QDir(lesson::lessonsDirectory()).filePath(QStringLiteral("../recordings/stitch.msrec"));
+  if (!sim::readRecording(recording.toStdString(), stitch).ok()) return fail(recording);
+  if (!window.startLesson(1, assessment::AttemptMode::Learn)) return fail(QStringLiteral("lesson 2"));
+  AttemptPage* attempt = window.attemptPage();
+  std::vector<sim::InputFrame> part(stitch.frames.begin(), stitch.frames.begin() + std::min<std::ptrdiff_t>(130, std::ssize(stitch.frames)));
+  attempt->replay(std::move(part), false);
+  if (!waitFor(attempt->runner(), &SimulationRunner::replayFinished)) return fail(QStringLiteral("replay"));
+  const int frames = window.viewport()->framesDrawn();
+  window.viewport()->update();
+  if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
+  if (!save(window, out.filePath(QStringLiteral("attempt-learn.png")), written)) return fail(QStringLiteral("attempt"));
+
+  // the whole stitch, scored
+  attempt->replay(stitch.frames, true);
+  if (!waitFor(attempt, &AttemptPage::finished, 120000)) return fail(QStringLiteral("results"));
+  if (!save(window, out.filePath(QStringLiteral("results.png")), written)) return fail(QStringLiteral("results"));
+
+  // the settings dialog
+  settings::SettingsDialog dialog(&window);
+  dialog.show();
+  if (!save(dialog, out.filePath(QStringLiteral("settings.png")), written)) return fail(QStringLiteral("settings"));
+  dialog.close();
+  window.close();
+  return written;
 }
 
 }  // namespace microsim::gui

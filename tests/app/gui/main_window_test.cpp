@@ -1,5 +1,7 @@
 #include "gui/main_window.h"
 #include "gui/viewport.h"
+#include "gui/pages/attempt_page.h"
+#include "gui/pages/sign_in_page.h"
 
 #include <QImage>
 #include <QMenuBar>
@@ -8,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "app/gui/core_profile.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -15,14 +19,6 @@
 namespace microsim::gui {
 namespace {
 
-// the same context request as the app's main()
-void requestCoreProfile() {
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  format.setDepthBufferSize(24);
-  QSurfaceFormat::setDefaultFormat(format);
-}
 
 struct OpenWindow {
   QTemporaryDir dir;
@@ -33,7 +29,7 @@ struct OpenWindow {
     requestCoreProfile();
     const QString path = dir.filePath(QStringLiteral("history.sqlite"));
     const assessment::DatabaseStatus status = history.open(path);
-    window = std::make_unique<MainWindow>(status, path);
+    window = std::make_unique<MainWindow>(&history, status, path);
     window->resize(800, 600);
   }
 };
@@ -43,6 +39,9 @@ TEST(MainWindow, ViewportDrawsAShadedObject) {
   QSignalSpy frames(w.window->viewport(), &Viewport::frameDrawn);
   w.window->show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(w.window.get()));
+  // the viewport lives on the attempt page: start lesson 1 as a guest
+  ASSERT_TRUE(w.window->startLesson(0, assessment::AttemptMode::Learn));
+  ASSERT_EQ(w.window->currentPage(), w.window->attemptPage());
   ASSERT_TRUE(frames.count() > 0 || frames.wait(10000));
   EXPECT_TRUE(w.window->viewport()->lastError().isEmpty()) << w.window->viewport()->lastError().toStdString();
 
@@ -68,7 +67,9 @@ TEST(MainWindow, HasMenusAndReportsTheDatabase) {
   for (QAction* a : w.window->menuBar()->actions()) titles << a->text();
   EXPECT_TRUE(titles.contains(QStringLiteral("&File")));
   EXPECT_TRUE(titles.contains(QStringLiteral("&Help")));
-  EXPECT_TRUE(w.window->databaseMessage().contains(QStringLiteral("schema 1"))) << w.window->databaseMessage().toStdString();
+  EXPECT_TRUE(w.window->databaseMessage().contains(QStringLiteral("schema"))) << w.window->databaseMessage().toStdString();
+  EXPECT_EQ(w.window->currentPage(), w.window->signInPage());
+  EXPECT_EQ(w.window->lessons().size(), 5u);
 }
 
 TEST(MainWindow, QuitActionClosesTheWindow) {

@@ -1,0 +1,184 @@
+// The lesson flow as a trainee goes through it, with real widgets and QTest input: create a
+// trainee, open lesson 2 in Test mode, feed the shipped stitch in, reach the results.
+#include "gui/main_window.h"
+#include "gui/pages/lesson_list_page.h"
+#include "gui/pages/results_page.h"
+#include "gui/pages/sign_in_page.h"
+#include "gui/simulation_runner.h"
+#include "gui/viewport.h"
+#include "support/cli_runner.h"
+
+#include "microsim/sim/scene/recording.h"
+
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "app/gui/core_profile.h"
+
+#include <gtest/gtest.h>
+
+namespace microsim::gui {
+namespace {
+
+const QString kSource = QStringLiteral(MICROSIM_SOURCE_DIR);
+
+
+struct App {
+  QTemporaryDir dir;
+  QString path;
+  assessment::HistoryDatabase history;
+  std::unique_ptr<MainWindow> window;
+
+  App() {
+    QSettings().clear();  // the test suite's own settings: every tunable at its default
+    requestCoreProfile();
+    path = dir.filePath(QStringLiteral("history.sqlite"));
+    const assessment::DatabaseStatus status = history.open(path);
+    EXPECT_TRUE(status.ok()) << status.driverMessage.toStdString();
+    window = std::make_unique<MainWindow>(&history, status, path);
+    window->resize(1024, 700);
+    window->show();
+    EXPECT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  }
+
+  template <typename T>
+  T* child(const char* name) const {
+    T* w = window->findChild<T*>(QString::fromLatin1(name));
+    EXPECT_NE(w, nullptr) << name;
+    return w;
+  }
+
+  // types a new trainee's name and clicks Create
+  void createTrainee(const QString& name) {
+    auto* field = child<QLineEdit>("newTraineeName");
+    QTest::mouseClick(field, Qt::LeftButton);
+    QTest::keyClicks(field, name);
+    QTest::mouseClick(child<QPushButton>("createTraineeButton"), Qt::LeftButton);
+  }
+
+  // clicks lesson `row` in the list, then the button
+  void openLesson(int row, const char* button) {
+    auto* table = child<QTableWidget>("lessonTable");
+    const QRect cell = table->visualItemRect(table->item(row, 0));
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell.center());
+    QTest::mouseClick(child<QPushButton>(button), Qt::LeftButton);
+  }
+};
+
+int reddishPixels(const QImage& image) {
+  int reddish = 0;
+  for (int y = 0; y < image.height(); y += 3)
+    for (int x = 0; x < image.width(); x += 3) {
+      const QRgb c = image.pixel(x, y);
+      if (qRed(c) > qGreen(c) + 40 && qRed(c) > 80) ++reddish;
+    }
+  return reddish;
+}
+
+TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
+  App app;
+  app.createTrainee(QStringLiteral("Ada Trainee"));
+  ASSERT_EQ(app.window->currentPage(), app.window->lessonListPage());
+  ASSERT_GE(app.window->lessons().size(), 2u);
+  EXPECT_EQ(app.window->lessonListPage()->status(1), LessonStatus::NotStarted);
+
+  app.openLesson(1, "testButton");
+  ASSERT_EQ(app.window->currentPage(), app.window->attemptPage());
+  AttemptPage* attempt = app.window->attemptPage();
+  ASSERT_TRUE(attempt->isActive());
+  ASSERT_NE(attempt->attemptId(), 0);
+
+  // the viewport shows the vessel
+  Viewport* viewport = app.window->viewport();
+  QSignalSpy frames(viewport, &Viewport::frameDrawn);
+  ASSERT_TRUE(frames.count() > 0 || frames.wait(20000));
+  EXPECT_TRUE(viewport->lastError().isEmpty()) << viewport->lastError().toStdString();
+  EXPECT_GT(reddishPixels(viewport->grabFramebuffer()), 300);
+
+  // the shipped stitch, fed in through the runner
+  sim::Recording stitch;
+  ASSERT_TRUE(sim::readRecording((kSource + QStringLiteral("/resources/recordings/stitch.msrec")).toStdString(), stitch).ok());
+  QSignalSpy finished(attempt, &AttemptPage::finished);
+  attempt->replay(stitch.frames);
+  ASSERT_TRUE(finished.wait(180000));
+  EXPECT_EQ(attempt->stepsDone(), 2) << "both targets of lesson 2 were pierced";
+  ASSERT_EQ(app.window->currentPage(), app.window->resultsPage());
+  const AttemptResult& result = app.window->resultsPage()->result();
+  ASSERT_TRUE(result.scored) << result.error.toStdString();
+  EXPECT_TRUE(result.stored) << result.error.toStdString();
+  EXPECT_EQ(result.pierces.size(), 4u);
+
+  // the same score as microsim-cli for the same recording and rubric
+  QTemporaryDir out;
+  const QString json = out.filePath(QStringLiteral("score.json"));
+  const testing::CliRun cli = testing::runCli(
+      {QStringLiteral("score"), QStringLiteral("--recording"), kSource + QStringLiteral("/resources/recordings/stitch.msrec"),
+       QStringLiteral("--scene"), kSource + QStringLiteral("/resources/scenes/anastomosis.json"),
+       QStringLiteral("--rubric"), kSource + QStringLiteral("/resources/rubrics/02_needle_entry.json"),
+       QStringLiteral("--json"), json});
+  ASSERT_EQ(cli.exitCode, 0) << cli.err.toStdString();
+  QFile file(json);
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+  const double cliScore = QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("score")).toDouble();
+  EXPECT_DOUBLE_EQ(result.score.score, cliScore);
+
+  // stored as a finished Test attempt with that score
+  const QList<assessment::Trainee> people = app.history.trainees();
+  ASSERT_EQ(people.size(), 1);
+  const QList<assessment::AttemptSummary> mine = app.history.attempts({people[0].id, assessment::Role::Trainee});
+  ASSERT_EQ(mine.size(), 1);
+  EXPECT_EQ(mine[0].status, assessment::AttemptStatus::Finished);
+  EXPECT_EQ(mine[0].mode, assessment::AttemptMode::Test);
+  EXPECT_EQ(mine[0].lesson, QStringLiteral("02_needle_entry"));
+  ASSERT_TRUE(mine[0].score.has_value());
+  EXPECT_DOUBLE_EQ(*mine[0].score, cliScore);
+
+  // back to the list: the lesson is no longer "not started"
+  QTest::mouseClick(app.child<QPushButton>("backButton"), Qt::LeftButton);
+  ASSERT_EQ(app.window->currentPage(), app.window->lessonListPage());
+  EXPECT_NE(app.window->lessonListPage()->status(1), LessonStatus::NotStarted);
+}
+
+TEST(LessonFlow, ClosingMidAttemptLeavesItUnfinished) {
+  App app;
+  app.createTrainee(QStringLiteral("Bo Trainee"));
+  app.openLesson(2, "learnButton");
+  AttemptPage* attempt = app.window->attemptPage();
+  ASSERT_TRUE(attempt->isActive());
+  const qint64 id = attempt->attemptId();
+  ASSERT_NE(id, 0);
+  // let the live simulation run a few steps
+  QTRY_VERIFY_WITH_TIMEOUT(attempt->runner()->steps() > 5, 20000);
+
+  app.window->close();
+  EXPECT_FALSE(attempt->isActive());
+  EXPECT_FALSE(attempt->runner()->isRunning());
+
+  const QList<assessment::Trainee> people = app.history.trainees();
+  ASSERT_EQ(people.size(), 1);
+  const QList<assessment::AttemptSummary> attempts = app.history.attempts({people[0].id, assessment::Role::Trainee});
+  ASSERT_EQ(attempts.size(), 1);
+  EXPECT_EQ(attempts[0].id, id);
+  EXPECT_NE(attempts[0].status, assessment::AttemptStatus::Finished);
+  EXPECT_FALSE(attempts[0].score.has_value());
+
+  // the database is still consistent and usable: a new session can start another attempt
+  app.window.reset();
+  assessment::HistoryDatabase again;
+  ASSERT_TRUE(again.open(app.path).ok());
+  const QList<assessment::AttemptSummary> reopened = again.attempts({people[0].id, assessment::Role::Trainee});
+  ASSERT_EQ(reopened.size(), 1);
+  EXPECT_NE(reopened[0].status, assessment::AttemptStatus::Finished);
+}
+
+}  // namespace
+}  // namespace microsim::gui
