@@ -49,6 +49,10 @@ const char* eventKey(sim::SceneEventKind k) {
       return "suture-pulled-out";
     case K::InputRejected:
       return "input-rejected";
+    case K::TissueOverStretch:
+      return "tissue-overstretch";
+    case K::TissueTear:
+      return "tissue-tear";
   }
   return "";
 }
@@ -76,6 +80,10 @@ QString eventText(const sim::SceneEvent& e) {
       return Cli::tr("suture slips out of a pierce");
     case K::InputRejected:
       return Cli::tr("input frame rejected");
+    case K::TissueOverStretch:
+      return Cli::tr("tissue link %1 over-stretched (%2 %)").arg(e.index).arg(e.count / 10.0);
+    case K::TissueTear:
+      return Cli::tr("tissue tears: %n link(s) removed", nullptr, e.count);
   }
   return {};
 }
