@@ -14,7 +14,7 @@ enum class SutureBenchCase { OneGrip, TwoGrips, Sliding, Contacts };
 
 /// What one run of one case measured.
 struct SutureBenchMeasure {
-  double microsPerStep = 0.0;  ///< wall-clock µs per 10 ms step, mean over the frames
+  double microsPerStep = 0.0;  ///< CPU µs of the stepping thread per 10 ms step, mean over the frames
   double maxStretch = 0.0;     ///< max |relative link stretch| over every frame
   int breaks = 0;              ///< break events over the run
 };

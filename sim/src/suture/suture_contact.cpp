@@ -71,9 +71,50 @@ bool boxesOverlap(const collide::Aabb& p, const collide::Aabb& q) {
 
 }  // namespace
 
+namespace {
+
+// pushes link (i, i + 1) out of capsule c where its interior passes closer than `reach` to the
+// axis (the nodes' own tests cover the ends); the side is the one the link came from
+bool pushLinkOutOfCapsule(Points& x, const Points& xStart, Eigen::Index i, const Capsule& c,
+                          double reach, double friction, std::span<const std::uint8_t> movable) {
+  const std::size_t i0 = static_cast<std::size_t>(i);
+  const std::array<double, 2> m = {movable[i0] ? 1.0 : 0.0, movable[i0 + 1] ? 1.0 : 0.0};
+  if (m[0] + m[1] == 0.0) return false;
+  const collide::SegmentClosest now = collide::closestSegmentSegment(x.col(i), x.col(i + 1), c.a, c.b);
+  if (now.distance >= reach || now.s <= 0.0 || now.s >= 1.0) return false;
+  const Vec3 startPoint = (1.0 - now.s) * xStart.col(i) + now.s * xStart.col(i + 1);
+  const Vec3 fromStart = startPoint - ((1.0 - now.t) * c.a + now.t * c.b);
+  Vec3 normal = now.onFirst - now.onSecond;
+  // crossed the axis within the substep (or on it): back to the side it came from
+  if (fromStart.squaredNorm() > 0.0 && (normal.dot(fromStart) <= 0.0 || now.distance == 0.0))
+    normal = fromStart;
+  if (!(normal.norm() > 0.0)) return false;
+  normal.normalize();
+  const double depth = reach - (now.onFirst - now.onSecond).dot(normal);
+  const std::array<double, 2> share = {1.0 - now.s, now.s};
+  const double denom = m[0] * share[0] * share[0] + m[1] * share[1] * share[1];
+  if (!(denom > 0.0)) return false;
+  const double lambda = depth / denom;
+  for (int k = 0; k < 2; ++k) x.col(i + k) += m[k] * share[k] * lambda * normal;
+
+  // friction on the contact point's tangential motion since the substep's start
+  const Vec3 motion = (1.0 - now.s) * x.col(i) + now.s * x.col(i + 1) - startPoint;
+  const Vec3 tangential = motion - motion.dot(normal) * normal;
+  const double slip = tangential.norm();
+  if (slip > 0.0) {
+    const double hold = friction * depth;
+    const Vec3 cancel = slip <= hold ? tangential : Vec3(tangential * (hold / slip));
+    for (int k = 0; k < 2; ++k) x.col(i + k) -= m[k] * share[k] / denom * cancel;
+  }
+  return true;
+}
+
+}  // namespace
+
 int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Capsule> capsules,
                            double radius, double friction, std::span<const std::uint8_t> movable,
-                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch) {
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch,
+                           std::span<const std::uint8_t> alive) {
   if (capsules.empty()) return 0;
   ChainBlocks local;
   ChainBlocks& blocks = scratch ? *scratch : local;
@@ -92,30 +133,40 @@ int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Caps
     if (reached == 0) continue;
     const Eigen::Index first = ChainBlocks::firstNode(b);
     const Eigen::Index end = std::min<Eigen::Index>(first + ChainBlocks::kNodes, nodes);
-  for (Eigen::Index i = first; i < end; ++i) {
-    if (!movable[static_cast<std::size_t>(i)]) continue;
     for (std::size_t k = 0; k < capsules.size(); ++k) {
       if (k < 32 && !(reached & (1u << k))) continue;
       const Capsule& c = capsules[k];
-      // closest point of the axis, push out along the radial direction
-      const Vec3 p = x.col(i);
-      const double t = collide::closestParameterOnSegment(p, c.a, c.b);
-      const Vec3 axis = (1.0 - t) * c.a + t * c.b;
-      const Vec3 off = p - axis;
-      const double dist = off.norm();
       const double reach = c.radius + radius;
-      if (dist >= reach) continue;
-      Vec3 normal = dist > 0.0 ? Vec3(off / dist) : Vec3::UnitZ();
-      if (dist == 0.0) {
-        const Vec3 fromStart = xStart.col(i) - axis;
-        if (fromStart.norm() > 0.0) normal = fromStart.normalized();
+      for (Eigen::Index i = first; i < end; ++i) {
+        // the node: closest point of the axis, push out along the radial direction
+        if (movable[static_cast<std::size_t>(i)]) {
+          const Vec3 p = x.col(i);
+          const double t = collide::closestParameterOnSegment(p, c.a, c.b);
+          const Vec3 axis = (1.0 - t) * c.a + t * c.b;
+          const Vec3 off = p - axis;
+          const double dist = off.norm();
+          if (dist < reach) {
+            Vec3 normal = dist > 0.0 ? Vec3(off / dist) : Vec3::UnitZ();
+            if (dist == 0.0) {
+              const Vec3 fromStart = xStart.col(i) - axis;
+              if (fromStart.norm() > 0.0) normal = fromStart.normalized();
+            }
+            x.col(i) = axis + reach * normal;
+            applyFriction(x.col(i), xStart.col(i), normal, reach - dist, friction);
+            touched[static_cast<std::size_t>(i)] = 1;
+            ++count;
+          }
+        }
+        // the link to the next node: a link as long as the jaw is thick may straddle it with
+        // both nodes outside, and its nodes pushed to opposite sides could never meet again
+        if (i + 1 < nodes && (alive.empty() || alive[static_cast<std::size_t>(i)]) &&
+            pushLinkOutOfCapsule(x, xStart, i, c, reach, friction, movable)) {
+          touched[static_cast<std::size_t>(i)] = 1;
+          touched[static_cast<std::size_t>(i + 1)] = 1;
+          ++count;
+        }
       }
-      x.col(i) = axis + reach * normal;
-      applyFriction(x.col(i), xStart.col(i), normal, reach - dist, friction);
-      touched[static_cast<std::size_t>(i)] = 1;
-      ++count;
     }
-  }
   }
   return count;
 }

@@ -232,7 +232,7 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
       for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
       report.contactNodes = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow,
-                                                   movable_, contact_, &blocks_);
+                                                   movable_, contact_, &blocks_, state.alive);
       if (world.surface)
         report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius,
                                                       muNow, movableSurface_, exemptions_, contact_,
@@ -251,12 +251,22 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     }
 
     // a last contact pass without friction (it would undo the length corrections): the substep
-    // ends outside every obstacle, where the next one starts
+    // ends outside every obstacle, where the next one starts; the lengths it broke are restored
+    // once more with the nodes it placed nearly held (finalContactWeight: they sink back by a
+    // small share of the residual, far less than the thread's radius, instead of leaving the
+    // whole residual as stretch on their links)
     std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
-    projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable_, contact_, &blocks_);
+    int placed = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable_,
+                                        contact_, &blocks_, state.alive);
     if (world.surface)
-      projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0, movableSurface_,
-                             exemptions_, contact_, &blocks_);
+      placed += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0,
+                                       movableSurface_, exemptions_, contact_, &blocks_);
+    if (placed > 0) {
+      SutureStepParams hold = params;
+      hold.contactWeight = params.finalContactWeight;
+      restoreLengths(model, state.x, state.alive, leaders_, contact_, hold, params.iterations);
+      if (model.needleLinks() > 0 && !needleHeld) rigidifyNeedle(model, state.x, swage);
+    }
 
     // slide through pierces, then break between grips
     state.time += h;

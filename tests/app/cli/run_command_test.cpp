@@ -20,7 +20,7 @@ const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
 const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
 const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
 // tests/sim/scene/stitch_test.cpp holds the same value
-const QString kGolden = QStringLiteral("4eee2d4eaae6d971");
+const QString kGolden = QStringLiteral("796f273405b4e638");
 
 QJsonObject readJson(const QString& path) {
   QFile f(path);

@@ -97,12 +97,15 @@ struct ContactCounts {
   int pairs = 0;  ///< self-contact link pairs corrected
 };
 
-/// Pushes movable nodes (movable[i] != 0) out of the capsules to distance `radius`, with
-/// friction μ against their motion since xStart. Marks corrected nodes in `touched`.
-/// `scratch` (optional) keeps the broad phase's boxes between calls.
+/// Pushes movable nodes (movable[i] != 0) and the intact links between them (alive[l] != 0;
+/// empty: all) out of the capsules to distance `radius`, with friction μ against their motion
+/// since xStart. A link whose interior is inside is moved along the normal
+/// (its nodes by their barycentric weights, as self-contact does), to the side it came from.
+/// Marks corrected nodes in `touched`. `scratch` (optional) keeps the broad phase's boxes.
 int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Capsule> capsules,
                            double radius, double friction, std::span<const std::uint8_t> movable,
-                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch = nullptr);
+                           std::vector<std::uint8_t>& touched, ChainBlocks* scratch = nullptr,
+                           std::span<const std::uint8_t> alive = {});
 
 /// Pushes movable nodes out of the surface to distance `radius` and back across any face
 /// their substep motion crossed from its front, with friction μ. Marks corrected nodes.

@@ -18,7 +18,9 @@
 //      soft leaders, the paper's drape constraints) → restore link lengths (the solver) →
 //      rigid needle; a round whose contacts corrected nothing and whose lengths were restored
 //      ends the loop (the next would restore the same lengths again);
-//   4. sliding through pierces, then the break test between grips (suture_constraints.h).
+//   4. a last frictionless contact pass (the substep ends outside every obstacle), and the
+//      lengths it disturbed restored with its nodes nearly held (finalContactWeight);
+//   5. sliding through pierces, then the break test between grips (suture_constraints.h).
 // Velocity is carried implicitly by x_prev (position-based dynamics), so corrections damp
 // themselves instead of injecting energy. Buffers live in the solver: a step allocates nothing
 // once the chain's size is known (slides and breaks excepted).
@@ -66,6 +68,7 @@ struct SutureStepParams {
   int projectionIterations = 32;      ///< direct: max Gauss–Newton sweeps per round (stops at tolerance)
   double projectionTolerance = 1e-10; ///< direct: relative length residual to stop at
   double contactWeight = 0.25;        ///< direct: inverse-mass scale of nodes in contact
+  double finalContactWeight = 0.02;   ///< direct: the same in the restore after the last contact pass
 };
 
 enum class SutureStepStatus : std::uint8_t {
