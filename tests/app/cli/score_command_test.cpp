@@ -135,13 +135,14 @@ TEST(ScoreCommand, BadInputsFailWithAMessage) {
   const QString broken = dir.filePath(QStringLiteral("broken.json"));
   QFile f(broken);
   ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-  f.write("{\"id\": \"x\", \"version\": 1, \"pass_mark\": 50,\n \"metrics\": [{\"key\": \"nope\"}]}");
+  f.write("{\"id\": \"x\", \"version\": 1, \"pass_mark\": 50,\n \"metrics\": [{\"key\": \"nope\", \"weight\": 1, "
+          "\"target\": 0, \"tolerance\": 1, \"limit\": 2, \"bad\": \"both\"}]}");
   f.close();
   CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"),
                      kScene, QStringLiteral("--rubric"), broken});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(broken + QStringLiteral(":2:"))) << r.err.toStdString();
-  EXPECT_TRUE(r.err.contains(QStringLiteral("metrics[0].key"))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("unknown metric (field metrics[0].key)"))) << r.err.toStdString();
 
   r = score({QStringLiteral("--recording"), kScene, QStringLiteral("--scene"), kScene});
   EXPECT_EQ(r.exitCode, 1);
