@@ -1,5 +1,7 @@
 #include "gui/shaded_mesh.h"
 
+#include "microsim/sim/scene/render_snapshot.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -68,6 +70,22 @@ ShadedMesh makeVesselPlaceholder(int segmentsAround, int segmentsAlong) {
   addWall(mesh, kRadius - kWall, kLength, segmentsAround, segmentsAlong, -1.0f);
   addAnnulus(mesh, kRadius - kWall, kRadius, 0.5f * kLength, segmentsAround, +1.0f);
   addAnnulus(mesh, kRadius - kWall, kRadius, -0.5f * kLength, segmentsAround, -1.0f);
+  return mesh;
+}
+
+ShadedMesh meshFromTriangles(const std::vector<float>& xyz, const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<float> normals;
+  sim::vertexNormals(xyz, triangles, normals);
+  ShadedMesh mesh;
+  mesh.vertices.resize(xyz.size() / 3);
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    for (std::size_t r = 0; r < 3; ++r) {
+      mesh.vertices[i].position[r] = xyz[3 * i + r];
+      mesh.vertices[i].normal[r] = normals[3 * i + r];
+    }
+  mesh.indices.reserve(triangles.size() * 3);
+  for (const auto& t : triangles)
+    for (int i : t) mesh.indices.push_back(static_cast<std::uint32_t>(i));
   return mesh;
 }
 

@@ -2,6 +2,7 @@
 // A triangle mesh ready for the GPU: interleaved position (mm) and unit normal, and
 // counter-clockwise triangles.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -21,5 +22,9 @@ struct ShadedMesh {
 /// placeholder until a lesson's scene is loaded. Radius 0.5 mm, wall 0.1 mm, length 4 mm,
 /// along x.
 ShadedMesh makeVesselPlaceholder(int segmentsAround = 48, int segmentsAlong = 24);
+
+/// A mesh from positions (3 floats per vertex, mm) and triangles, with area-weighted vertex
+/// normals (sim::vertexNormals): the forceps jaw and other static meshes of a scene.
+ShadedMesh meshFromTriangles(const std::vector<float>& xyz, const std::vector<std::array<int, 3>>& triangles);
 
 }  // namespace microsim::gui

@@ -1,22 +1,46 @@
 #pragma once
-// The microscope viewport: an OpenGL 3.3 core-profile widget that draws shaded meshes
-// with per-vertex normals under two lights, seen through an orbiting camera (drag to
-// orbit, wheel to zoom). It draws whatever mesh it was last given; the simulation
-// never waits on it.
+// The microscope viewport: an OpenGL 3.3 core-profile widget that draws the simulation's latest
+// RenderSnapshot (DESIGN.md §Data flow): the tissue with per-vertex normals from the snapshot
+// and two-sided lighting (the lumen's inner wall has its own colour), the suture and the
+// needle as smooth tubes built here from the snapshot's nodes (broken links skipped), the
+// forceps jaws from the scene's jaw mesh, and depth cues: a background plane under the scene
+// with the scene's projected shadow, darkening with depth past the focal plane and a loss of
+// contrast off it (the microscope's shallow depth of field). Learn-mode guides are drawn over
+// it; F1 shows the key map.
+//
+// Mouse: left drag orbits, middle (or Shift + left) drag pans, the wheel zooms, Ctrl + wheel
+// moves the focal plane, right drag moves the active tool in the view plane (with a manual
+// source). Keys go to the manual source (tracking/manual_source.h), F1 toggles the help.
+//
+// It redraws when the runner publishes a snapshot and reads it without waiting on a step.
+// Without a runner it draws the mesh given to setMesh (a placeholder vessel by default).
 
+#include "gui/render/camera.h"
+#include "gui/render/gpu_mesh.h"
+#include "gui/render/guide.h"
+#include "gui/render/stereo_mode.h"
 #include "gui/shaded_mesh.h"
 
+#include "microsim/sim/scene/render_snapshot.h"
+
 #include <QMatrix4x4>
-#include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLShaderProgram>
-#include <QOpenGLVertexArrayObject>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QPointer>
 
+#include <array>
 #include <memory>
+#include <vector>
+
+namespace microsim::tracking {
+class ManualSource;
+}
 
 namespace microsim::gui {
+
+class SimulationRunner;
 
 class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   Q_OBJECT
@@ -25,9 +49,38 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   explicit Viewport(QWidget* parent = nullptr);
   ~Viewport() override;
 
+  /// A static mesh to draw while no runner is set.
   void setMesh(ShadedMesh mesh);
+  /// Draws this runner's latest snapshot (null: back to the static mesh); resets the camera
+  /// to the scene's when it has a scene. The runner must outlive the viewport or be unset.
+  void setRunner(SimulationRunner* runner);
+  /// Re-reads the runner's static geometry (call after the runner loads another scene).
+  void sceneChanged();
+  /// The keyboard and right-drag tool source (null: none); kept informed of the view's axes.
+  void setManualSource(tracking::ManualSource* source);
+  /// Learn-mode marks; an empty list removes them.
+  void setGuides(std::vector<Guide> guides);
+  /// Requested presentation; QuadBuffer falls back to Anaglyph when unavailable.
+  void setStereoMode(StereoMode mode);
+  StereoMode stereoMode() const { return stereoMode_; }
+  /// What is drawn: the request, or its fallback.
+  StereoMode effectiveStereoMode() const;
+  /// True when the widget can present left/right buffers (Qt ≥ 6.5 and a stereo format).
+  bool quadBufferAvailable() const;
+  void setHelpVisible(bool visible);
+  bool helpVisible() const { return helpVisible_; }
+
+  MicroscopeCamera& camera() { return camera_; }
+  const MicroscopeCamera& camera() const { return camera_; }
+  /// Call after changing the camera through camera().
+  void cameraChanged();
+
   /// Frames drawn so far (for tests and the status bar).
   int framesDrawn() const { return framesDrawn_; }
+  /// The step count of the snapshot the last frame showed (-1: none).
+  int drawnStep() const { return drawnStep_; }
+  /// The snapshot the last frame showed (null: none); for measurements and tests.
+  const sim::RenderSnapshot* drawnSnapshot() const { return snapshot_.get(); }
   /// Empty while the GL pipeline is healthy; otherwise what failed (shader log).
   QString lastError() const { return lastError_; }
 
@@ -43,28 +96,54 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+  void keyReleaseEvent(QKeyEvent* event) override;
+  bool focusNextPrevChild(bool next) override;
 
  private:
-  void uploadMesh();
   void releaseGL();
-  QMatrix4x4 viewMatrix() const;
+  bool buildPrograms();
+  void loadStaticGeometry();
+  void updateDynamicGeometry();
+  void buildGuides();
+  void drawEye(Eye eye, const QRect& area);
+  void drawScene(const QMatrix4x4& view, const QMatrix4x4& projection);
+  void drawShadows(const QMatrix4x4& view, const QMatrix4x4& projection);
+  void drawOverlay();
+  void setShading(const QVector3D& colour, float specular, float shininess);
+  QRect pixelRect(const QRect& logical) const;
 
-  ShadedMesh mesh_;
-  bool meshDirty_ = true;
-  int indexCount_ = 0;
-  std::unique_ptr<QOpenGLShaderProgram> program_;
-  QOpenGLVertexArrayObject vao_;
-  QOpenGLBuffer vertexBuffer_{QOpenGLBuffer::VertexBuffer};
-  QOpenGLBuffer indexBuffer_{QOpenGLBuffer::IndexBuffer};
-  QMatrix4x4 projection_;
+  // static and dynamic meshes (CPU side)
+  ShadedMesh staticMesh_;
+  bool staticMeshDirty_ = true;
+  ShadedMesh tissue_;
+  std::vector<float> tissueColours_;
+  bool tissueTopologyDirty_ = true;
+  ShadedMesh jaw_[2];  // per hand, in the jaw frame
+  ShadedMesh needle_;
+  ShadedMesh thread_;
+  ShadedMesh guides_;
+  ShadedMesh plane_;
+  bool guidesDirty_ = true;
+  QMatrix4x4 shadowMatrix_;
 
-  // camera: orbit around the origin (degrees, mm)
-  float yaw_ = -30.0f;
-  float pitch_ = 25.0f;
-  float distance_ = 7.0f;
+  // GPU side
+  std::unique_ptr<QOpenGLShaderProgram> shaded_;
+  GpuMesh staticGpu_, tissueGpu_, needleGpu_, threadGpu_, guidesGpu_, planeGpu_;
+  std::array<GpuMesh, 2> jawGpu_;
+  bool jawDirty_ = true;
+
+  QPointer<SimulationRunner> runner_;
+  QPointer<tracking::ManualSource> manual_;
+  std::shared_ptr<const sim::RenderSnapshot> snapshot_;  // the one being drawn
+  std::vector<Guide> guideList_;
+  StereoMode stereoMode_ = StereoMode::Mono;
+  bool helpVisible_ = false;
+
+  MicroscopeCamera camera_;
   QPoint lastMouse_;
-
   int framesDrawn_ = 0;
+  int drawnStep_ = -1;
   QString lastError_;
 };
 

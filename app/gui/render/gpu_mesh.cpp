@@ -1,0 +1,69 @@
+#include "gui/render/gpu_mesh.h"
+
+#include <QOpenGLExtraFunctions>
+
+#include <cstddef>
+
+namespace microsim::gui {
+
+bool GpuMesh::create() {
+  if (vao_.isCreated()) return true;
+  if (!vao_.create() || !vertices_.create() || !colours_.create() || !indices_.create()) return false;
+  vertices_.setUsagePattern(QOpenGLBuffer::StreamDraw);
+  haveIndices_ = false;
+  haveColours_ = false;
+  indexCount_ = 0;
+  return true;
+}
+
+void GpuMesh::destroy() {
+  vao_.destroy();
+  vertices_.destroy();
+  colours_.destroy();
+  indices_.destroy();
+  haveIndices_ = false;
+  haveColours_ = false;
+  indexCount_ = 0;
+}
+
+void GpuMesh::upload(QOpenGLExtraFunctions& gl, const ShadedMesh& mesh, bool indices) {
+  QOpenGLVertexArrayObject::Binder bind(&vao_);
+  vertices_.bind();
+  const auto bytes = static_cast<int>(mesh.vertices.size() * sizeof(ShadedVertex));
+  vertices_.allocate(nullptr, bytes);  // orphan the old storage
+  vertices_.write(0, mesh.vertices.data(), bytes);
+  gl.glEnableVertexAttribArray(0);
+  gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ShadedVertex),
+                           reinterpret_cast<const void*>(offsetof(ShadedVertex, position)));
+  gl.glEnableVertexAttribArray(1);
+  gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ShadedVertex),
+                           reinterpret_cast<const void*>(offsetof(ShadedVertex, normal)));
+  if (indices || !haveIndices_) {
+    indices_.bind();
+    indices_.allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));
+    indexCount_ = static_cast<int>(mesh.indices.size());
+    haveIndices_ = true;
+  }
+}
+
+void GpuMesh::setColours(QOpenGLExtraFunctions& gl, const std::vector<float>& rgb) {
+  QOpenGLVertexArrayObject::Binder bind(&vao_);
+  if (rgb.empty()) {
+    gl.glDisableVertexAttribArray(2);
+    haveColours_ = false;
+    return;
+  }
+  colours_.bind();
+  colours_.allocate(rgb.data(), static_cast<int>(rgb.size() * sizeof(float)));
+  gl.glEnableVertexAttribArray(2);
+  gl.glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  haveColours_ = true;
+}
+
+void GpuMesh::draw(QOpenGLExtraFunctions& gl) {
+  if (indexCount_ == 0) return;
+  QOpenGLVertexArrayObject::Binder bind(&vao_);
+  gl.glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace microsim::gui
