@@ -4,6 +4,7 @@
 
 #include "microsim/assessment/storage/history_database.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
