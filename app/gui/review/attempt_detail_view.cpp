@@ -1,0 +1,257 @@
+#include "gui/review/attempt_detail_view.h"
+
+#include "gui/review/replay_player.h"
+#include "gui/review/review_data.h"
+#include "gui/review/review_text.h"
+#include "gui/viewport.h"
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QLocale>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace microsim::gui {
+namespace {
+
+QTableWidget* makeTable(const QStringList& headers) {
+  auto* table = new QTableWidget(0, int(headers.size()));
+  table->setHorizontalHeaderLabels(headers);
+  table->horizontalHeader()->setStretchLastSection(true);
+  table->verticalHeader()->hide();
+  table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  return table;
+}
+
+void set(QTableWidget* table, int row, int column, const QString& text) {
+  table->setItem(row, column, new QTableWidgetItem(text));
+}
+
+// the stored per-pierce values shown, in column order
+const QStringList& pierceColumns() {
+  static const QStringList keys = {QStringLiteral("time_s"),           QStringLiteral("entry_angle_deg"),
+                                   QStringLiteral("exit_angle_deg"),   QStringLiteral("bite_mm"),
+                                   QStringLiteral("bite_walls"),       QStringLiteral("circumference_deg"),
+                                   QStringLiteral("full_thickness"),   QStringLiteral("back_wall")};
+  return keys;
+}
+
+}  // namespace
+
+AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
+  heading_ = new QLabel;
+  heading_->setTextFormat(Qt::PlainText);
+  heading_->setWordWrap(true);
+  neverEvents_ = new QLabel;
+  neverEvents_->setWordWrap(true);
+  neverEvents_->setStyleSheet(QStringLiteral("color: #b00020;"));
+
+  metrics_ = makeTable({tr("Metric"), tr("Value"), tr("Target"), tr("Tolerance"), tr("Weight"), tr("Points"),
+                        tr("Feedback")});
+  QStringList pierceHeaders{tr("Pierce")};
+  for (const QString& key : pierceColumns()) pierceHeaders << ReviewText::pierceValueName(key);
+  pierces_ = makeTable(pierceHeaders);
+
+  annotations_ = new QListWidget;
+  annotations_->setWordWrap(true);
+  note_ = new QPlainTextEdit;
+  note_->setPlaceholderText(tr("A note for this attempt…"));
+  note_->setMaximumHeight(90);
+  addNote_ = new QPushButton(tr("Add note"));
+  connect(addNote_, &QPushButton::clicked, this, [this] {
+    const QString text = note_->toPlainText().trimmed();
+    if (text.isEmpty() || attemptId_ == 0) return;
+    Q_EMIT annotationRequested(attemptId_, text);
+  });
+  auto* notes = new QWidget;
+  auto* notesLayout = new QVBoxLayout(notes);
+  notesLayout->addWidget(annotations_, 1);
+  notesLayout->addWidget(note_);
+  notesLayout->addWidget(addNote_, 0, Qt::AlignRight);
+
+  auto* tabs = new QTabWidget;
+  tabs->addTab(metrics_, tr("Metrics"));
+  tabs->addTab(pierces_, tr("Pierces"));
+  tabs->addTab(notes, tr("Annotations"));
+
+  auto* left = new QWidget;
+  auto* leftLayout = new QVBoxLayout(left);
+  leftLayout->setContentsMargins(0, 0, 0, 0);
+  leftLayout->addWidget(heading_);
+  leftLayout->addWidget(neverEvents_);
+  leftLayout->addWidget(tabs, 1);
+
+  // the replay: the viewport is made on first use (it needs an OpenGL context)
+  replayArea_ = new QWidget;
+  auto* replayLayout = new QVBoxLayout(replayArea_);
+  replayLayout->setContentsMargins(0, 0, 0, 0);
+  replay_ = new QPushButton(tr("Replay in 3D"));
+  toEnd_ = new QPushButton(tr("To end"));
+  toEnd_->setEnabled(false);
+  replayStatus_ = new QLabel;
+  replayStatus_->setWordWrap(true);
+  auto* buttons = new QHBoxLayout;
+  buttons->addWidget(replay_);
+  buttons->addWidget(toEnd_);
+  buttons->addWidget(replayStatus_, 1);
+  replayLayout->addLayout(buttons);
+  replayLayout->addStretch(1);
+  connect(replay_, &QPushButton::clicked, this, &AttemptDetailView::startReplay);
+  connect(toEnd_, &QPushButton::clicked, this, [this] {
+    if (player_) player_->skipToEnd();
+  });
+
+  auto* splitter = new QSplitter(Qt::Horizontal);
+  splitter->addWidget(left);
+  splitter->addWidget(replayArea_);
+  splitter->setStretchFactor(0, 1);
+  splitter->setStretchFactor(1, 1);
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(splitter);
+  clear();
+}
+
+AttemptDetailView::~AttemptDetailView() {
+  // the viewport must not outlive the runner it draws
+  if (viewport_) viewport_->setRunner(nullptr);
+  delete player_;
+  player_ = nullptr;
+}
+
+void AttemptDetailView::clear() {
+  if (player_) player_->stop();
+  attemptId_ = 0;
+  recording_.clear();
+  scenePath_.clear();
+  heading_->setText(tr("Choose an attempt in a trainee's history."));
+  neverEvents_->hide();
+  metrics_->setRowCount(0);
+  pierces_->setRowCount(0);
+  annotations_->clear();
+  note_->clear();
+  addNote_->setEnabled(false);
+  note_->setEnabled(false);
+  replay_->setEnabled(false);
+  toEnd_->setEnabled(false);
+  replayStatus_->clear();
+}
+
+void AttemptDetailView::setAttempt(const assessment::AttemptDetail& detail, const QString& traineeName,
+                                   const QString& lessonTitle, const QString& scenePath, bool canAnnotate) {
+  clear();
+  const assessment::AttemptSummary& a = detail.summary;
+  attemptId_ = a.id;
+  recording_ = detail.recording;
+  scenePath_ = scenePath;
+  const QLocale locale;
+  QString text = tr("%1 — %2, %3, %4").arg(traineeName, lessonTitle, ReviewText::mode(a.mode),
+                                           locale.toString(a.started.toLocalTime(), QLocale::ShortFormat));
+  if (a.score) {
+    text += QLatin1Char('\n') + tr("Score %1 of 100 (%2); rubric %3 version %4")
+                                    .arg(locale.toString(*a.score, 'f', 1), a.passed ? tr("passed") : tr("not passed"),
+                                         a.rubricId)
+                                    .arg(a.rubricVersion);
+  } else {
+    text += QLatin1Char('\n') + ReviewText::status(a.status);
+  }
+  heading_->setText(text);
+  fillMetrics(detail);
+  fillPierces(detail);
+  fillAnnotations(detail);
+  addNote_->setEnabled(canAnnotate);
+  note_->setEnabled(canAnnotate);
+  note_->setVisible(canAnnotate);
+  addNote_->setVisible(canAnnotate);
+  const bool replayable = !recording_.isEmpty() && !scenePath_.isEmpty();
+  replay_->setEnabled(replayable);
+  if (!replayable) replayStatus_->setText(recording_.isEmpty() ? tr("No recording stored.") : tr("The lesson's scene is not installed."));
+}
+
+void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
+  const QLocale locale;
+  metrics_->setRowCount(int(detail.metrics.size()));
+  for (int row = 0; row < detail.metrics.size(); ++row) {
+    const assessment::StoredMetric& m = detail.metrics[row];
+    set(metrics_, row, 0, ReviewText::metricName(m.key));
+    set(metrics_, row, 1, ReviewText::value(m.value, m.unit, 2));
+    set(metrics_, row, 2, ReviewText::value(m.target, m.unit, 2));
+    set(metrics_, row, 3, QStringLiteral("± ") + ReviewText::value(m.tolerance, m.unit, 2));
+    set(metrics_, row, 4, locale.toString(m.weight, 'g', 3));
+    set(metrics_, row, 5, locale.toString(100.0 * m.points, 'f', 0) + QStringLiteral(" %"));
+    set(metrics_, row, 6, ReviewText::feedback(m.feedback));
+  }
+  metrics_->resizeColumnsToContents();
+
+  QStringList never;
+  for (const QString& key : detail.neverEvents) never << ReviewText::feedback(key);
+  neverEvents_->setText(never.join(QLatin1Char('\n')));
+  neverEvents_->setVisible(!never.isEmpty());
+}
+
+void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
+  const std::vector<PierceRow> rows = pierceRows(detail.pierces);
+  pierces_->setRowCount(int(rows.size()));
+  const QLocale locale;
+  for (int r = 0; r < int(rows.size()); ++r) {
+    set(pierces_, r, 0, QString::number(rows[r].pierce + 1));
+    for (int c = 0; c < pierceColumns().size(); ++c) {
+      const QString& key = pierceColumns()[c];
+      const double v = rows[r].values.value(key, std::nan(""));
+      QString text;
+      if (key == QStringLiteral("full_thickness") || key == QStringLiteral("back_wall"))
+        text = std::isnan(v) ? QStringLiteral("–") : (v > 0.5 ? tr("yes") : tr("no"));
+      else
+        text = std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', key == QStringLiteral("bite_walls") ? 2 : 1);
+      set(pierces_, r, c + 1, text);
+    }
+  }
+  pierces_->resizeColumnsToContents();
+}
+
+void AttemptDetailView::fillAnnotations(const assessment::AttemptDetail& detail) {
+  const QLocale locale;
+  for (const assessment::Annotation& n : detail.annotations) {
+    annotations_->addItem(tr("%1, %2:\n%3")
+                              .arg(n.authorName, locale.toString(n.created.toLocalTime(), QLocale::ShortFormat), n.note));
+  }
+}
+
+bool AttemptDetailView::startReplay() {
+  if (recording_.isEmpty() || scenePath_.isEmpty()) return false;
+  if (!player_) {
+    player_ = new ReplayPlayer;
+    viewport_ = new Viewport;
+    viewport_->setMinimumSize(320, 240);
+    auto* layout = static_cast<QVBoxLayout*>(replayArea_->layout());
+    layout->insertWidget(1, viewport_, 1);
+    connect(player_, &ReplayPlayer::finished, this, [this] {
+      toEnd_->setEnabled(false);
+      replayStatus_->setText(tr("Replay finished: %n frame(s).", nullptr, player_->frameCount()));
+    });
+  }
+  viewport_->setRunner(nullptr);
+  const ReplayLoad loaded = player_->load(scenePath_, recording_);
+  switch (loaded) {
+    case ReplayLoad::Ok: break;
+    case ReplayLoad::NoRecording: replayStatus_->setText(tr("No recording stored.")); return false;
+    case ReplayLoad::BadRecording: replayStatus_->setText(tr("The stored recording is damaged.")); return false;
+    case ReplayLoad::BadScene: replayStatus_->setText(tr("The lesson's scene could not be loaded.")); return false;
+  }
+  viewport_->setRunner(player_->runner());
+  toEnd_->setEnabled(true);
+  replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+  player_->play();
+  return true;
+}
+
+}  // namespace microsim::gui

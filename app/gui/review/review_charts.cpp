@@ -1,0 +1,119 @@
+#include "gui/review/review_charts.h"
+
+#include "gui/review/review_text.h"
+
+#include <QAreaSeries>
+#include <QChart>
+#include <QLineSeries>
+#include <QPen>
+#include <QValueAxis>
+
+#include <algorithm>
+
+namespace microsim::gui {
+namespace {
+
+// an x axis of attempt numbers 1..count with integer ticks
+QValueAxis* attemptAxis(int count) {
+  auto* axis = new QValueAxis;
+  axis->setRange(0.5, std::max(count, 1) + 0.5);
+  axis->setLabelFormat(QStringLiteral("%d"));
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(1);
+  axis->setTickInterval(std::max(1, (count + 9) / 10));
+  return axis;
+}
+
+void attach(QChart* chart, QAbstractSeries* series, QValueAxis* x, QValueAxis* y) {
+  chart->addSeries(series);
+  series->attachAxis(x);
+  series->attachAxis(y);
+}
+
+}  // namespace
+
+QChart* ReviewCharts::scoreChart(const QList<double>& scores, std::optional<double> passMark) {
+  auto* chart = new QChart;
+  chart->setTitle(tr("Score over attempts"));
+  auto* x = attemptAxis(int(scores.size()));
+  x->setTitleText(tr("Attempt"));
+  auto* y = new QValueAxis;
+  y->setRange(0, 100);
+  y->setTitleText(tr("Score"));
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+
+  auto* series = new QLineSeries;
+  series->setObjectName(QString::fromLatin1(kScoreSeriesName));
+  series->setName(tr("Score"));
+  series->setPointsVisible(true);
+  for (int i = 0; i < scores.size(); ++i) series->append(i + 1, scores[i]);
+  attach(chart, series, x, y);
+
+  if (passMark) {
+    auto* line = new QLineSeries;
+    line->setObjectName(QString::fromLatin1(kPassMarkSeriesName));
+    line->setName(tr("Pass mark"));
+    line->append(x->min(), *passMark);
+    line->append(x->max(), *passMark);
+    QPen pen(Qt::darkGreen);
+    pen.setStyle(Qt::DashLine);
+    pen.setWidthF(1.5);
+    line->setPen(pen);
+    attach(chart, line, x, y);
+  }
+  return chart;
+}
+
+QChart* ReviewCharts::metricChart(const QString& title, const QString& unit, const QList<QPointF>& points,
+                                  std::optional<TargetBand> band, int attemptCount) {
+  auto* chart = new QChart;
+  const QString symbol = ReviewText::unitSymbol(unit);
+  chart->setTitle(symbol.isEmpty() ? title : tr("%1 (%2)").arg(title, symbol));
+  chart->legend()->hide();
+  auto* x = attemptAxis(attemptCount);
+  auto* y = new QValueAxis;
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+
+  // the y range holds every value and the whole band, with a margin
+  double low = band ? band->low : 0.0;
+  double high = band ? band->high : 1.0;
+  if (!band && !points.isEmpty()) low = high = points.front().y();
+  for (const QPointF& p : points) {
+    low = std::min(low, p.y());
+    high = std::max(high, p.y());
+  }
+  const double margin = std::max(0.1 * (high - low), 1e-3 + 0.05 * std::abs(high));
+  y->setRange(low - margin, high + margin);
+
+  if (band) {
+    auto* upper = new QLineSeries;
+    auto* lower = new QLineSeries;
+    upper->append(x->min(), band->high);
+    upper->append(x->max(), band->high);
+    lower->append(x->min(), band->low);
+    lower->append(x->max(), band->low);
+    auto* area = new QAreaSeries(upper, lower);
+    area->setName(tr("Target"));
+    area->setColor(QColor(120, 200, 120, 90));
+    area->setBorderColor(QColor(80, 160, 80));
+    attach(chart, area, x, y);
+  }
+  auto* series = new QLineSeries;
+  series->setName(title);
+  series->setPointsVisible(true);
+  for (const QPointF& p : points) series->append(p);
+  attach(chart, series, x, y);
+  return chart;
+}
+
+QLineSeries* ReviewCharts::scoreSeries(QChart* chart) {
+  if (!chart) return nullptr;
+  for (QAbstractSeries* s : chart->series()) {
+    if (s->objectName() == QLatin1String(kScoreSeriesName)) return qobject_cast<QLineSeries*>(s);
+  }
+  return nullptr;
+}
+
+}  // namespace microsim::gui

@@ -1,0 +1,117 @@
+#include "gui/review/review_text.h"
+
+#include <QHash>
+#include <QLocale>
+
+#include <cmath>
+
+namespace microsim::gui {
+
+QString ReviewText::metricName(const QString& key) {
+  static const QHash<QString, const char*> names = {
+      {QStringLiteral("time"), QT_TR_NOOP("Time")},
+      {QStringLiteral("path_length"), QT_TR_NOOP("Path length")},
+      {QStringLiteral("path_length_left"), QT_TR_NOOP("Path length, left hand")},
+      {QStringLiteral("path_length_right"), QT_TR_NOOP("Path length, right hand")},
+      {QStringLiteral("movements"), QT_TR_NOOP("Movements")},
+      {QStringLiteral("smoothness"), QT_TR_NOOP("Smoothness")},
+      {QStringLiteral("idle_time"), QT_TR_NOOP("Idle time")},
+      {QStringLiteral("regrasps"), QT_TR_NOOP("Re-grasps")},
+      {QStringLiteral("suture_breaks"), QT_TR_NOOP("Suture breaks")},
+      {QStringLiteral("max_stretch"), QT_TR_NOOP("Largest tissue stretch")},
+      {QStringLiteral("tissue_damage"), QT_TR_NOOP("Tissue damage")},
+      {QStringLiteral("passages"), QT_TR_NOOP("Wall passages")},
+      {QStringLiteral("entry_angle"), QT_TR_NOOP("Entry angle")},
+      {QStringLiteral("exit_angle"), QT_TR_NOOP("Exit angle")},
+      {QStringLiteral("bite"), QT_TR_NOOP("Bite")},
+      {QStringLiteral("bite_walls"), QT_TR_NOOP("Bite (wall thicknesses)")},
+      {QStringLiteral("full_thickness"), QT_TR_NOOP("Full-thickness passages")},
+      {QStringLiteral("back_wall_catches"), QT_TR_NOOP("Back-wall catches")},
+      {QStringLiteral("stitches"), QT_TR_NOOP("Stitches")},
+      {QStringLiteral("bite_symmetry"), QT_TR_NOOP("Bite asymmetry")},
+      {QStringLiteral("spacing"), QT_TR_NOOP("Stitch spacing")},
+      {QStringLiteral("triangulation_error"), QT_TR_NOOP("Triangulation error")},
+  };
+  auto it = names.constFind(key);
+  return it == names.cend() ? key : tr(it.value());
+}
+
+QString ReviewText::unitSymbol(const QString& unit) {
+  if (unit == QStringLiteral("deg")) return QStringLiteral("°");
+  if (unit == QStringLiteral("count") || unit == QStringLiteral("1")) return {};
+  return unit;
+}
+
+QString ReviewText::feedback(const QString& key) {
+  static const QHash<QString, const char*> sentences = {
+      {QStringLiteral("time.too_slow"), QT_TR_NOOP("Took longer than the target time.")},
+      {QStringLiteral("motion.wasted_path"), QT_TR_NOOP("The instruments travelled further than needed.")},
+      {QStringLiteral("motion.jerky"), QT_TR_NOOP("Movements were jerky; aim for smooth, continuous motion.")},
+      {QStringLiteral("motion.hesitant"), QT_TR_NOOP("Long pauses with both hands still.")},
+      {QStringLiteral("tissue.over_stretched"), QT_TR_NOOP("The tissue was stretched too far.")},
+      {QStringLiteral("handling.too_many_regrasps"), QT_TR_NOOP("Too many re-grasps.")},
+      {QStringLiteral("pierce.not_done"), QT_TR_NOOP("The wall was not passed with the needle.")},
+      {QStringLiteral("entry_angle.too_oblique"), QT_TR_NOOP("The needle entered too obliquely; enter perpendicular to the wall.")},
+      {QStringLiteral("exit_angle.too_oblique"), QT_TR_NOOP("The needle came out too obliquely; follow its curve.")},
+      {QStringLiteral("bite.too_long"), QT_TR_NOOP("Bites too far from the edge.")},
+      {QStringLiteral("bite.too_short"), QT_TR_NOOP("Bites too close to the edge.")},
+      {QStringLiteral("bite.partial_thickness"), QT_TR_NOOP("Some passages did not go through the whole wall.")},
+      {QStringLiteral("bite.asymmetric"), QT_TR_NOOP("The two bites of a stitch differ in length.")},
+      {QStringLiteral("stitch.not_completed"), QT_TR_NOOP("Not all stitches were completed.")},
+      {QStringLiteral("stitch.too_few"), QT_TR_NOOP("Too few stitches.")},
+      {QStringLiteral("stitch.too_many"), QT_TR_NOOP("More stitches than needed.")},
+      {QStringLiteral("triangulation.uneven"), QT_TR_NOOP("The first stitches are not spaced 120° apart.")},
+      {QStringLiteral("never.back_wall_catch"), QT_TR_NOOP("The back wall was caught: the lumen would be closed.")},
+      {QStringLiteral("never.suture_break"), QT_TR_NOOP("The suture broke.")},
+      {QStringLiteral("never.tissue_tear"), QT_TR_NOOP("The tissue was torn or over-stretched.")},
+  };
+  if (key.isEmpty()) return {};
+  auto it = sentences.constFind(key);
+  if (it != sentences.cend()) return tr(it.value());
+  // the scoring's default keys: "<metric>.missing", "<metric>.too_high", "<metric>.too_low"
+  const QString metric = metricName(key.section(QLatin1Char('.'), 0, 0));
+  const QString kind = key.section(QLatin1Char('.'), 1);
+  if (kind == QStringLiteral("missing")) return tr("%1: not measured in this attempt.").arg(metric);
+  if (kind == QStringLiteral("too_high")) return tr("%1 too high.").arg(metric);
+  if (kind == QStringLiteral("too_low")) return tr("%1 too low.").arg(metric);
+  return key;
+}
+
+QString ReviewText::mode(assessment::AttemptMode mode) {
+  return mode == assessment::AttemptMode::Test ? tr("Test") : tr("Learn");
+}
+
+QString ReviewText::status(assessment::AttemptStatus status) {
+  switch (status) {
+    case assessment::AttemptStatus::InProgress: return tr("In progress");
+    case assessment::AttemptStatus::Finished: return tr("Finished");
+    case assessment::AttemptStatus::Interrupted: return tr("Interrupted");
+  }
+  return {};
+}
+
+QString ReviewText::pierceValueName(const QString& key) {
+  static const QHash<QString, const char*> names = {
+      {QStringLiteral("time_s"), QT_TR_NOOP("Time (s)")},
+      {QStringLiteral("entry_angle_deg"), QT_TR_NOOP("Entry angle (°)")},
+      {QStringLiteral("exit_angle_deg"), QT_TR_NOOP("Exit angle (°)")},
+      {QStringLiteral("bite_mm"), QT_TR_NOOP("Bite (mm)")},
+      {QStringLiteral("bite_walls"), QT_TR_NOOP("Bite (walls)")},
+      {QStringLiteral("circumference_deg"), QT_TR_NOOP("Position (°)")},
+      {QStringLiteral("full_thickness"), QT_TR_NOOP("Full thickness")},
+      {QStringLiteral("back_wall"), QT_TR_NOOP("Back wall")},
+  };
+  auto it = names.constFind(key);
+  return it == names.cend() ? key : tr(it.value());
+}
+
+QString ReviewText::value(double value, const QString& unit, int decimals) {
+  if (std::isnan(value)) return QStringLiteral("–");
+  const QString number = QLocale().toString(value, 'f', decimals);
+  const QString symbol = unitSymbol(unit);
+  if (symbol.isEmpty()) return number;
+  if (symbol == QStringLiteral("°")) return number + symbol;
+  return number + QLatin1Char(' ') + symbol;
+}
+
+}  // namespace microsim::gui

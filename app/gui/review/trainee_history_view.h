@@ -1,0 +1,46 @@
+#pragma once
+// A trainee's history in one lesson: the score chart, the key metrics' charts with their
+// target bands, and the table of finished attempts (choosing a row opens that attempt).
+
+#include "gui/review/review_data.h"
+
+#include <QList>
+#include <QWidget>
+
+class QChart;
+class QChartView;
+class QLabel;
+class QTableWidget;
+
+namespace microsim::gui {
+
+class TraineeHistoryView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit TraineeHistoryView(QWidget* parent = nullptr);
+
+  /// Shows `finished` (oldest first, one chart point each) with their stored metrics
+  /// (`metrics[i]` belongs to `finished[i]`); `rubric` gives the pass mark and the bands
+  /// (null: neither).
+  void setHistory(const QList<assessment::AttemptSummary>& finished,
+                  const QList<QList<assessment::StoredMetric>>& metrics, const assessment::Rubric* rubric);
+
+  QChart* scoreChart() const;
+  /// The key metrics' charts, in keyMetrics() order.
+  QList<QChart*> metricCharts() const;
+  QTableWidget* attemptsTable() const { return table_; }
+  /// The score chart's view, to render it elsewhere (the PDF report).
+  QChartView* scoreChartView() const { return scoreView_; }
+
+ Q_SIGNALS:
+  void attemptChosen(qint64 attemptId);
+
+ private:
+  QChartView* scoreView_ = nullptr;
+  QList<QChartView*> metricViews_;
+  QTableWidget* table_ = nullptr;
+  QLabel* emptyLabel_ = nullptr;
+};
+
+}  // namespace microsim::gui
