@@ -351,10 +351,6 @@
         <translation>pivot oder register</translation>
     </message>
     <message>
-        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]</source>
-        <translation>Aufruf: microsim-cli calibrate pivot|register --input DATEI [--json DATEI]</translation>
-    </message>
-    <message>
         <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
         <translation>microsim-cli calibrate: pivot oder register angeben und --input DATEI nennen</translation>
     </message>
@@ -591,10 +587,6 @@
         <translation>Posen verwerfen, die sich schneller als &lt;mm/s&gt; bewegen (Vorgabe 2000).</translation>
     </message>
     <message>
-        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--once] [--max-speed MM_S]</source>
-        <translation>Aufruf: microsim-cli track --igtl HOST:PORT [--duration S] [--json DATEI] [--once] [--max-speed MM_S]</translation>
-    </message>
-    <message>
         <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
         <translation>microsim-cli track: den Server als --igtl HOST:PORT angeben</translation>
     </message>
@@ -622,6 +614,414 @@
         <source>microsim-cli track: cannot write %1</source>
         <translation>microsim-cli track: %1 kann nicht geschrieben werden</translation>
     </message>
+    <message>
+        <source>sample %1 of the tracker stream: bad "%2"</source>
+        <translation>Wert %1 des Trackerstroms: fehlerhaftes „%2“</translation>
+    </message>
+    <message>
+        <source>not a tracker stream this version reads</source>
+        <translation>kein Trackerstrom, den diese Version liest</translation>
+    </message>
+    <message>
+        <source>choose the device with --device (the stream holds: %1)</source>
+        <translation>wählen Sie das Gerät mit --device (der Strom enthält: %1)</translation>
+    </message>
+    <message>
+        <source>pivot on a tracker stream: the device to calibrate.</source>
+        <translation>pivot auf einem Trackerstrom: das zu kalibrierende Gerät.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--device NAME] [--json FILE]</source>
+        <translation>Aufruf: microsim-cli calibrate pivot|register --input DATEI [--device NAME] [--json DATEI]</translation>
+    </message>
+    <message>
+        <source>score a recorded attempt with a rubric (and store it in the history)</source>
+        <translation>einen aufgezeichneten Versuch nach einem Bewertungsschema bewerten (und im Verlauf speichern)</translation>
+    </message>
+    <message>
+        <source>the history database: migrate, backup, restore, export CSV, trainees</source>
+        <translation>die Verlaufsdatenbank: migrieren, sichern, wiederherstellen, CSV exportieren, Trainees</translation>
+    </message>
+    <message>
+        <source>cannot create the folder for %1</source>
+        <translation>der Ordner für %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot open %1</source>
+        <translation>%1 kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a microsim database or is damaged; it was left untouched</source>
+        <translation>%1 ist keine microsim-Datenbank oder ist beschädigt; sie wurde nicht verändert</translation>
+    </message>
+    <message>
+        <source>%1 is locked by another program</source>
+        <translation>%1 ist von einem anderen Programm gesperrt</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer microsim</source>
+        <translation>%1 wurde von einer neueren microsim-Version geschrieben</translation>
+    </message>
+    <message>
+        <source>updating %1 failed; it was left as it was</source>
+        <translation>die Aktualisierung von %1 ist fehlgeschlagen; die Datei blieb unverändert</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; it was left untouched</source>
+        <translation>%1 ist schreibgeschützt; die Datei wurde nicht verändert</translation>
+    </message>
+    <message>
+        <source>the database is not open</source>
+        <translation>die Datenbank ist nicht geöffnet</translation>
+    </message>
+    <message>
+        <source>not allowed for this user</source>
+        <translation>für diesen Benutzer nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>no such person or attempt</source>
+        <translation>diese Person oder dieser Versuch existiert nicht</translation>
+    </message>
+    <message>
+        <source>the attempt is already finished</source>
+        <translation>der Versuch ist bereits abgeschlossen</translation>
+    </message>
+    <message>
+        <source>that name is taken</source>
+        <translation>dieser Name ist bereits vergeben</translation>
+    </message>
+    <message>
+        <source>empty name, or a password shorter than %1 characters</source>
+        <translation>leerer Name oder ein Passwort mit weniger als %1 Zeichen</translation>
+    </message>
+    <message>
+        <source>unknown instructor or wrong password</source>
+        <translation>unbekannter Ausbilder oder falsches Passwort</translation>
+    </message>
+    <message>
+        <source>not possible on a PostgreSQL server (use pg_dump and pg_restore there)</source>
+        <translation>auf einem PostgreSQL-Server nicht möglich (dort pg_dump und pg_restore verwenden)</translation>
+    </message>
+    <message>
+        <source>the file is not a microsim history</source>
+        <translation>die Datei ist keine microsim-Verlaufsdatenbank</translation>
+    </message>
+    <message>
+        <source>the backup was written by a newer microsim</source>
+        <translation>die Sicherung wurde von einer neueren microsim-Version geschrieben</translation>
+    </message>
+    <message>
+        <source>the file could not be written (it may exist already)</source>
+        <translation>die Datei konnte nicht geschrieben werden (vielleicht existiert sie bereits)</translation>
+    </message>
+    <message>
+        <source>the database reported an error</source>
+        <translation>die Datenbank meldete einen Fehler</translation>
+    </message>
+    <message>
+        <source>instructor</source>
+        <translation>Ausbilder</translation>
+    </message>
+    <message>
+        <source>trainee</source>
+        <translation>Trainee</translation>
+    </message>
+    <message>
+        <source>The history: an SQLite &lt;file&gt; or a postgresql://user@host:port/db URL.</source>
+        <translation>Der Verlauf: eine SQLite-Datei &lt;file&gt; oder eine URL postgresql://user@host:port/db.</translation>
+    </message>
+    <message>
+        <source>add-trainee: the trainee's &lt;group&gt;.</source>
+        <translation>add-trainee: die Gruppe &lt;group&gt; des Trainees.</translation>
+    </message>
+    <message>
+        <source>export-csv: sign in as instructor &lt;name&gt; (password on stdin).</source>
+        <translation>export-csv: als Ausbilder &lt;name&gt; anmelden (Passwort über stdin).</translation>
+    </message>
+    <message>
+        <source>add-instructor: read the password from standard input.</source>
+        <translation>add-instructor: das Passwort von der Standardeingabe lesen.</translation>
+    </message>
+    <message>
+        <source>list-trainees: also write JSON to &lt;file&gt;.</source>
+        <translation>list-trainees: zusätzlich JSON in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>migrate, backup, restore, export-csv, list-trainees, add-trainee or add-instructor</source>
+        <translation>migrate, backup, restore, export-csv, list-trainees, add-trainee oder add-instructor</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db FILE_OR_URL]</source>
+        <translation>Aufruf: microsim-cli db migrate|backup DATEI|restore DATEI|export-csv DATEI --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db DATEI_ODER_URL]</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: add-instructor reads the password from stdin: give --password-stdin</source>
+        <translation>microsim-cli db: add-instructor liest das Passwort von stdin: --password-stdin angeben</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: export-csv needs --instructor NAME (password on stdin)</source>
+        <translation>microsim-cli db: export-csv braucht --instructor NAME (Passwort über stdin)</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: %1</source>
+        <translation>microsim-cli db: %1</translation>
+    </message>
+    <message>
+        <source>microsim-cli db %1: %2</source>
+        <translation>microsim-cli db %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: schema version %2</source>
+        <translation>%1: Schemaversion %2</translation>
+    </message>
+    <message>
+        <source>backed up %1 to %2</source>
+        <translation>%1 nach %2 gesichert</translation>
+    </message>
+    <message>
+        <source>restored %1 from %2 (schema version %3)</source>
+        <translation>%1 aus %2 wiederhergestellt (Schemaversion %3)</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: cannot write %1</source>
+        <translation>microsim-cli db: %1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>added trainee %1 (id %2)</source>
+        <translation>Trainee %1 hinzugefügt (ID %2)</translation>
+    </message>
+    <message>
+        <source>added instructor %1 (id %2)</source>
+        <translation>Ausbilder %1 hinzugefügt (ID %2)</translation>
+    </message>
+    <message>
+        <source>tissue link %1 over-stretched (%2 %)</source>
+        <translation>Gewebeverbindung %1 überdehnt (%2 %)</translation>
+    </message>
+    <message numerus="yes">
+        <source>tissue tears: %n link(s) removed</source>
+        <translation><numerusform>Gewebe reißt: %n Verbindung entfernt</numerusform><numerusform>Gewebe reißt: %n Verbindungen entfernt</numerusform></translation>
+    </message>
+    <message>
+        <source>cannot open the rubric file</source>
+        <translation>die Bewertungsdatei lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>wrong type</source>
+        <translation>falscher Typ</translation>
+    </message>
+    <message>
+        <source>missing field</source>
+        <translation>fehlendes Feld</translation>
+    </message>
+    <message>
+        <source>unknown metric</source>
+        <translation>unbekannte Kennzahl</translation>
+    </message>
+    <message>
+        <source>invalid value</source>
+        <translation>ungültiger Wert</translation>
+    </message>
+    <message>
+        <source>rubric</source>
+        <translation>Bewertungsschema</translation>
+    </message>
+    <message>
+        <source>version %1, pass mark %2</source>
+        <translation>Version %1, Bestehensgrenze %2</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s)</source>
+        <translation><numerusform>%n Bild</numerusform><numerusform>%n Bilder</numerusform></translation>
+    </message>
+    <message>
+        <source>(unfinished: scored as far as it goes)</source>
+        <translation>(unvollständig: bewertet, soweit vorhanden)</translation>
+    </message>
+    <message>
+        <source>score</source>
+        <translation>Punktzahl</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <source>never-event</source>
+        <translation>Never-Event</translation>
+    </message>
+    <message>
+        <source>metric</source>
+        <translation>Kennzahl</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>feedback</source>
+        <translation>Rückmeldung</translation>
+    </message>
+    <message>
+        <source>pierces</source>
+        <translation>Einstiche</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>%1 s, end %2, %3 → %4, entry %5°, exit %6°, bite %7 mm, at %8°</source>
+        <translation>%1 s, Ende %2, %3 → %4, Einstich %5°, Ausstich %6°, Stichabstand %7 mm, bei %8°</translation>
+    </message>
+    <message>
+        <source>full thickness</source>
+        <translation>durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>back wall</source>
+        <translation>Hinterwand</translation>
+    </message>
+    <message>
+        <source>not allowed</source>
+        <translation>nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>not found</source>
+        <translation>nicht gefunden</translation>
+    </message>
+    <message>
+        <source>the attempt is no longer in progress</source>
+        <translation>der Versuch läuft nicht mehr</translation>
+    </message>
+    <message>
+        <source>the name is taken</source>
+        <translation>der Name ist vergeben</translation>
+    </message>
+    <message>
+        <source>database error</source>
+        <translation>Datenbankfehler</translation>
+    </message>
+    <message>
+        <source>cannot open the history database %1</source>
+        <translation>die Verlaufsdatenbank %1 lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>cannot store the attempt: %1</source>
+        <translation>der Versuch lässt sich nicht speichern: %1</translation>
+    </message>
+    <message>
+        <source>The recording &lt;file&gt; to score.</source>
+        <translation>Die zu bewertende Aufzeichnung &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>The rubric &lt;file&gt; that grades it.</source>
+        <translation>Das Bewertungsschema &lt;file&gt;, nach dem bewertet wird.</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; (default: the one the recording names).</source>
+        <translation>Die Szene &lt;file&gt; (Vorgabe: die in der Aufzeichnung genannte).</translation>
+    </message>
+    <message>
+        <source>Store the attempt in the history database &lt;file or URL&gt;.</source>
+        <translation>Den Versuch in der Verlaufsdatenbank &lt;file or URL&gt; speichern.</translation>
+    </message>
+    <message>
+        <source>The trainee the attempt belongs to (with --db; added when new).</source>
+        <translation>Der Lernende, dem der Versuch gehört (mit --db; wird angelegt, wenn neu).</translation>
+    </message>
+    <message>
+        <source>The lesson stored with the attempt (default: the rubric's id).</source>
+        <translation>Die mit dem Versuch gespeicherte Lektion (Vorgabe: die Kennung des Bewertungsschemas).</translation>
+    </message>
+    <message>
+        <source>The attempt's mode stored with --db: learn or test (default test).</source>
+        <translation>Der mit --db gespeicherte Modus des Versuchs: learn oder test (Vorgabe test).</translation>
+    </message>
+    <message>
+        <source>Write the score, metrics and pierces as JSON to &lt;file&gt;.</source>
+        <translation>Punktzahl, Kennzahlen und Einstiche als JSON in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli score --recording REC --rubric FILE [--scene FILE] [--db FILE --trainee NAME [--lesson ID] [--mode learn|test]] [--json OUT]</source>
+        <translation>Aufruf: microsim-cli score --recording REC --rubric FILE [--scene FILE] [--db FILE --trainee NAME [--lesson ID] [--mode learn|test]] [--json OUT]</translation>
+    </message>
+    <message>
+        <source>--recording REC and --rubric FILE are required</source>
+        <translation>--recording REC und --rubric FILE sind erforderlich</translation>
+    </message>
+    <message>
+        <source>--db and --trainee go together</source>
+        <translation>--db und --trainee gehören zusammen</translation>
+    </message>
+    <message>
+        <source>--mode is learn or test, not '%1'</source>
+        <translation>--mode ist learn oder test, nicht '%1'</translation>
+    </message>
+    <message numerus="yes">
+        <source>scoring its %n complete frame(s)</source>
+        <translation><numerusform>bewerte ihr %n vollständiges Bild</numerusform><numerusform>bewerte ihre %n vollständigen Bilder</numerusform></translation>
+    </message>
+    <message>
+        <source>the recording names no scene: give --scene FILE</source>
+        <translation>die Aufzeichnung nennt keine Szene: --scene FILE angeben</translation>
+    </message>
+    <message>
+        <source>stored as attempt %1</source>
+        <translation>als Versuch %1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Write every accepted pose and channel value as a tracker stream to &lt;file&gt;.</source>
+        <translation>Jede angenommene Pose und jeden Kanalwert als Trackerstrom in &lt;file&gt; schreiben.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
+        <translation>Aufruf: microsim-cli track --igtl HOST:PORT [--duration S] [--json DATEI] [--record DATEI] [--once] [--max-speed MM_S]</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -645,16 +1045,654 @@
         <source>file</source>
         <translation>Datei</translation>
     </message>
+    <message>
+        <source>cannot create %1</source>
+        <translation>%1 kann nicht angelegt werden</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AttemptDetailView</name>
+    <message>
+        <source>Metric</source>
+        <translation>Messgröße</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Feedback</source>
+        <translation>Rückmeldung</translation>
+    </message>
+    <message>
+        <source>Pierce</source>
+        <translation>Stich</translation>
+    </message>
+    <message>
+        <source>A note for this attempt…</source>
+        <translation>Eine Notiz zu diesem Versuch …</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Notiz hinzufügen</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Messgrößen</translation>
+    </message>
+    <message>
+        <source>Pierces</source>
+        <translation>Stiche</translation>
+    </message>
+    <message>
+        <source>Annotations</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>Replay in 3D</source>
+        <translation>In 3D abspielen</translation>
+    </message>
+    <message>
+        <source>To end</source>
+        <translation>Zum Ende</translation>
+    </message>
+    <message>
+        <source>Choose an attempt in a trainee's history.</source>
+        <translation>Wählen Sie einen Versuch im Verlauf eines Trainees.</translation>
+    </message>
+    <message>
+        <source>%1 — %2, %3, %4</source>
+        <translation>%1 – %2, %3, %4</translation>
+    </message>
+    <message>
+        <source>Score %1 of 100 (%2); rubric %3 version %4</source>
+        <translation>%1 von 100 Punkten (%2); Bewertungsschema %3, Version %4</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <source>No recording stored.</source>
+        <translation>Keine Aufzeichnung gespeichert.</translation>
+    </message>
+    <message>
+        <source>The lesson's scene is not installed.</source>
+        <translation>Die Szene der Lektion ist nicht installiert.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>%1, %2:
+%3</source>
+        <translation>%1, %2:
+%3</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replay finished: %n frame(s).</source>
+        <translation><numerusform>Wiedergabe beendet: %n Bild.</numerusform><numerusform>Wiedergabe beendet: %n Bilder.</numerusform></translation>
+    </message>
+    <message>
+        <source>The stored recording is damaged.</source>
+        <translation>Die gespeicherte Aufzeichnung ist beschädigt.</translation>
+    </message>
+    <message>
+        <source>The lesson's scene could not be loaded.</source>
+        <translation>Die Szene der Lektion konnte nicht geladen werden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %n frame(s)…</source>
+        <translation><numerusform>%n Bild wird abgespielt …</numerusform><numerusform>%n Bilder werden abgespielt …</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AttemptPage</name>
+    <message>
+        <source>Finish attempt</source>
+        <translation>Versuch beenden</translation>
+    </message>
+    <message>
+        <source>Abandon</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>The rubric %1 cannot be read (field %2, line %3).</source>
+        <translation>Das Bewertungsschema %1 ist nicht lesbar (Feld %2, Zeile %3).</translation>
+    </message>
+    <message>
+        <source>The scene %1 cannot be prepared: %2</source>
+        <translation>Die Szene %1 kann nicht vorbereitet werden: %2</translation>
+    </message>
+    <message>
+        <source>The scene %1 cannot be loaded (field %2, line %3).</source>
+        <translation>Die Szene %1 kann nicht geladen werden (Feld %2, Zeile %3).</translation>
+    </message>
+    <message>
+        <source>Learn mode: follow the marks.</source>
+        <translation>Lernmodus: folgen Sie den Markierungen.</translation>
+    </message>
+    <message>
+        <source>Test mode: graded, no hints.</source>
+        <translation>Prüfungsmodus: bewertet, ohne Hilfen.</translation>
+    </message>
+    <message>
+        <source>This attempt is not stored (no history).</source>
+        <translation>Dieser Versuch wird nicht gespeichert (kein Verlauf).</translation>
+    </message>
+    <message>
+        <source>Replaying a recording…</source>
+        <translation>Eine Aufzeichnung wird abgespielt …</translation>
+    </message>
+    <message>
+        <source>Every step is done: finish the attempt when you are ready.</source>
+        <translation>Alle Schritte sind erledigt: beenden Sie den Versuch, wenn Sie so weit sind.</translation>
+    </message>
+    <message>
+        <source>Scoring…</source>
+        <translation>Bewertung …</translation>
+    </message>
+    <message>
+        <source>The recording %1 could not be replayed for scoring.</source>
+        <translation>Die Aufzeichnung %1 konnte zur Bewertung nicht abgespielt werden.</translation>
+    </message>
+    <message>
+        <source>The score could not be stored (%1).</source>
+        <translation>Die Bewertung konnte nicht gespeichert werden (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::CalibrationSession</name>
+    <message>
+        <source>Cannot read %1.</source>
+        <translation>%1 kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>%1 is neither a recording nor a tracker stream.</source>
+        <translation>%1 ist weder eine Aufzeichnung noch ein Trackerstrom.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged.</source>
+        <translation>%1 ist beschädigt.</translation>
+    </message>
+    <message>
+        <source>Save setup profile</source>
+        <translation>Einrichtungsprofil speichern</translation>
+    </message>
+    <message>
+        <source>The database is not open.</source>
+        <translation>Die Datenbank ist nicht geöffnet.</translation>
+    </message>
+    <message>
+        <source>Profile name:</source>
+        <translation>Profilname:</translation>
+    </message>
+    <message>
+        <source>Calibrated by:</source>
+        <translation>Kalibriert von:</translation>
+    </message>
+    <message>
+        <source>The profile could not be stored: %1</source>
+        <translation>Das Profil konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Calibration</source>
+        <translation>&amp;Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Connect a tracker or open a tracker recording first.</source>
+        <translation>Verbinden Sie zuerst einen Tracker oder öffnen Sie eine Trackeraufzeichnung.</translation>
+    </message>
+    <message>
+        <source>Connect to OpenIGTLink…</source>
+        <translation>Mit OpenIGTLink verbinden…</translation>
+    </message>
+    <message>
+        <source>Connect to OpenIGTLink</source>
+        <translation>Mit OpenIGTLink verbinden</translation>
+    </message>
+    <message>
+        <source>Server (host:port):</source>
+        <translation>Server (Host:Port):</translation>
+    </message>
+    <message>
+        <source>Give the server as host:port.</source>
+        <translation>Geben Sie den Server als Host:Port an.</translation>
+    </message>
+    <message>
+        <source>Play a tracker recording…</source>
+        <translation>Trackeraufzeichnung abspielen…</translation>
+    </message>
+    <message>
+        <source>Play a tracker recording</source>
+        <translation>Trackeraufzeichnung abspielen</translation>
+    </message>
+    <message>
+        <source>Recordings (*.json *.msrec)</source>
+        <translation>Aufzeichnungen (*.json *.msrec)</translation>
+    </message>
+    <message>
+        <source>Setup profile…</source>
+        <translation>Einrichtungsprofil…</translation>
+    </message>
+    <message>
+        <source>Save setup profile…</source>
+        <translation>Einrichtungsprofil speichern…</translation>
+    </message>
+    <message>
+        <source>Pivot calibration…</source>
+        <translation>Pivot-Kalibrierung…</translation>
+    </message>
+    <message>
+        <source>Registration…</source>
+        <translation>Registrierung…</translation>
+    </message>
+    <message>
+        <source>Forceps closure…</source>
+        <translation>Pinzettenschluss…</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Linke Hand</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Rechte Hand</translation>
+    </message>
+    <message>
+        <source>Forceps closure</source>
+        <translation>Pinzettenschluss</translation>
+    </message>
+    <message>
+        <source>Hand:</source>
+        <translation>Hand:</translation>
+    </message>
+    <message>
+        <source>Motion scaling…</source>
+        <translation>Bewegungsskalierung…</translation>
+    </message>
+    <message>
+        <source>Latency…</source>
+        <translation>Latenz…</translation>
+    </message>
+    <message>
+        <source>Live view of the tools</source>
+        <translation>Live-Ansicht der Instrumente</translation>
+    </message>
+    <message>
+        <source>Calibrated tools</source>
+        <translation>Kalibrierte Instrumente</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ClosureDialog</name>
+    <message>
+        <source>Forceps closure</source>
+        <translation>Pinzettenschluss</translation>
+    </message>
+    <message>
+        <source>Open the jaws fully, then squeeze them shut a few times.</source>
+        <translation>Öffnen Sie die Branchen ganz und drücken Sie sie dann einige Male zu.</translation>
+    </message>
+    <message>
+        <source>Start again</source>
+        <translation>Neu beginnen</translation>
+    </message>
+    <message>
+        <source>Channel:</source>
+        <translation>Kanal:</translation>
+    </message>
+    <message>
+        <source>No reading yet.</source>
+        <translation>Noch kein Messwert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Open %1 · closed %2 (%n reading(s))</source>
+        <translation><numerusform>Offen %1 · geschlossen %2 (%n Messwert)</numerusform><numerusform>Offen %1 · geschlossen %2 (%n Messwerte)</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::FeedbackText</name>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Weglänge, linke Hand</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Weglänge, rechte Hand</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Bewegungen</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Gleichmäßigkeit</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Leerlaufzeit</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Nachgriffe</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Fadenrisse</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Größte Gewebedehnung</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Gewebeschaden</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Wanddurchstiche</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Einstichwinkel</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ausstichwinkel</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Stichabstand</translation>
+    </message>
+    <message>
+        <source>Bite in wall thicknesses</source>
+        <translation>Stichabstand in Wanddicken</translation>
+    </message>
+    <message>
+        <source>Full-thickness bites</source>
+        <translation>Stiche durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Hinterwand mitgefasst</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Nähte</translation>
+    </message>
+    <message>
+        <source>Bite symmetry</source>
+        <translation>Symmetrie der Stiche</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Nahtabstand</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Triangulationsfehler</translation>
+    </message>
+    <message>
+        <source>Take the same bite on both ends.</source>
+        <translation>Stechen Sie an beiden Enden gleich weit vom Rand.</translation>
+    </message>
+    <message>
+        <source>Pass through the whole wall, not only part of it.</source>
+        <translation>Stechen Sie durch die ganze Wand, nicht nur durch einen Teil.</translation>
+    </message>
+    <message>
+        <source>Enter closer to the cut edge.</source>
+        <translation>Stechen Sie näher am Schnittrand ein.</translation>
+    </message>
+    <message>
+        <source>Enter further from the cut edge: the stitch may tear out.</source>
+        <translation>Stechen Sie weiter vom Schnittrand ein: die Naht kann ausreißen.</translation>
+    </message>
+    <message>
+        <source>Enter the wall more perpendicularly.</source>
+        <translation>Stechen Sie senkrechter in die Wand ein.</translation>
+    </message>
+    <message>
+        <source>Follow the needle's curve so it leaves the wall perpendicularly.</source>
+        <translation>Folgen Sie der Krümmung der Nadel, damit sie senkrecht aus der Wand austritt.</translation>
+    </message>
+    <message>
+        <source>Re-grasp less: plan each grip.</source>
+        <translation>Weniger nachgreifen: planen Sie jeden Griff.</translation>
+    </message>
+    <message>
+        <source>Fewer pauses: keep the movement going.</source>
+        <translation>Weniger Pausen: bleiben Sie in Bewegung.</translation>
+    </message>
+    <message>
+        <source>Move more smoothly.</source>
+        <translation>Bewegen Sie sich gleichmäßiger.</translation>
+    </message>
+    <message>
+        <source>Shorter, more direct instrument paths.</source>
+        <translation>Kürzere, direktere Instrumentenwege.</translation>
+    </message>
+    <message>
+        <source>The back wall was caught: this closes the vessel.</source>
+        <translation>Die Hinterwand wurde mitgefasst: das verschließt das Gefäß.</translation>
+    </message>
+    <message>
+        <source>The suture broke: pull more gently.</source>
+        <translation>Der Faden ist gerissen: ziehen Sie sanfter.</translation>
+    </message>
+    <message>
+        <source>The tissue was torn or over-stretched.</source>
+        <translation>Das Gewebe wurde gerissen oder überdehnt.</translation>
+    </message>
+    <message>
+        <source>The needle did not pass through the wall.</source>
+        <translation>Die Nadel ist nicht durch die Wand gegangen.</translation>
+    </message>
+    <message>
+        <source>The stitch was not completed through both ends.</source>
+        <translation>Die Naht wurde nicht durch beide Enden geführt.</translation>
+    </message>
+    <message>
+        <source>Too few stitches.</source>
+        <translation>Zu wenige Nähte.</translation>
+    </message>
+    <message>
+        <source>More stitches than needed.</source>
+        <translation>Mehr Nähte als nötig.</translation>
+    </message>
+    <message>
+        <source>Work faster.</source>
+        <translation>Arbeiten Sie zügiger.</translation>
+    </message>
+    <message>
+        <source>Handle the tissue more gently: it was over-stretched.</source>
+        <translation>Behandeln Sie das Gewebe sanfter: es wurde überdehnt.</translation>
+    </message>
+    <message>
+        <source>Space the first three stitches 120° apart.</source>
+        <translation>Setzen Sie die ersten drei Nähte im Abstand von 120°.</translation>
+    </message>
+    <message>
+        <source>%1: not measured in this attempt.</source>
+        <translation>%1: in diesem Versuch nicht gemessen.</translation>
+    </message>
+    <message>
+        <source>%1 is too high.</source>
+        <translation>%1 ist zu hoch.</translation>
+    </message>
+    <message>
+        <source>%1 is too low.</source>
+        <translation>%1 ist zu niedrig.</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LatencyDialog</name>
+    <message>
+        <source>Latency</source>
+        <translation>Latenz</translation>
+    </message>
+    <message>
+        <source>Hold the tool and the reference together and move them briskly in every direction for about ten seconds.</source>
+        <translation>Halten Sie Instrument und Referenz zusammen und bewegen Sie sie etwa zehn Sekunden lang zügig in alle Richtungen.</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Tracked device:</source>
+        <translation>Getracktes Gerät:</translation>
+    </message>
+    <message>
+        <source>Reference device:</source>
+        <translation>Referenzgerät:</translation>
+    </message>
+    <message>
+        <source>Stop and estimate</source>
+        <translation>Anhalten und schätzen</translation>
+    </message>
+    <message>
+        <source>Recording…</source>
+        <translation>Aufnahme läuft…</translation>
+    </message>
+    <message>
+        <source>Latency %1 ms (correlation %2)</source>
+        <translation>Latenz %1 ms (Korrelation %2)</translation>
+    </message>
+    <message>
+        <source>Too short: record longer.</source>
+        <translation>Zu kurz: länger aufnehmen.</translation>
+    </message>
+    <message>
+        <source>The devices sent invalid samples.</source>
+        <translation>Die Geräte haben ungültige Werte gesendet.</translation>
+    </message>
+    <message>
+        <source>No motion: move the tool.</source>
+        <translation>Keine Bewegung: bewegen Sie das Instrument.</translation>
+    </message>
+    <message>
+        <source>The motions do not match (correlation %1): move them together.</source>
+        <translation>Die Bewegungen passen nicht zusammen (Korrelation %1): bewegen Sie beide gemeinsam.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonListPage</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Stand</translation>
+    </message>
+    <message>
+        <source>Learn (guided)</source>
+        <translation>Lernen (geführt)</translation>
+    </message>
+    <message>
+        <source>Test (graded)</source>
+        <translation>Prüfung (bewertet)</translation>
+    </message>
+    <message>
+        <source>Sign out</source>
+        <translation>Abmelden</translation>
+    </message>
+    <message>
+        <source>not started</source>
+        <translation>nicht begonnen</translation>
+    </message>
+    <message>
+        <source>practised</source>
+        <translation>geübt</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <source>proficient</source>
+        <translation>sicher beherrscht</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lektionen für %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Ziele&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LiveToolView</name>
+    <message>
+        <source>top (x–y)</source>
+        <translation>oben (x–y)</translation>
+    </message>
+    <message>
+        <source>side (x–z)</source>
+        <translation>seitlich (x–z)</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MainWindow</name>
     <message>
         <source>microsim — micro-anastomosis trainer</source>
         <translation>microsim — Mikroanastomose-Trainer</translation>
-    </message>
-    <message>
-        <source>Drag to orbit the microscope, wheel to zoom.</source>
-        <translation>Ziehen dreht das Mikroskop, das Mausrad zoomt.</translation>
     </message>
     <message>
         <source>History: %1 (schema %2)</source>
@@ -697,26 +1735,6 @@
         <translation>&amp;Einstellungen</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Systemvorgabe</translation>
-    </message>
-    <message>
-        <source>English</source>
-        <translation>Englisch</translation>
-    </message>
-    <message>
-        <source>German</source>
-        <translation>Deutsch</translation>
-    </message>
-    <message>
-        <source>Spanish</source>
-        <translation>Spanisch</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -735,6 +1753,1204 @@
     <message>
         <source>&lt;p&gt;&lt;b&gt;microsim %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Practise and assessment of microvascular anastomosis under a virtual operating microscope.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;microsim %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Übung und Bewertung mikrovaskulärer Anastomosen unter einem virtuellen Operationsmikroskop.&lt;/p&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n lesson file(s) could not be read; the first: %1 (%2)</source>
+        <translation><numerusform>%n Lektionsdatei konnte nicht gelesen werden; die erste: %1 (%2)</numerusform><numerusform>%n Lektionsdateien konnten nicht gelesen werden; die erste: %1 (%2)</numerusform></translation>
+    </message>
+    <message>
+        <source>Instructor: %1</source>
+        <translation>Ausbilder(in): %1</translation>
+    </message>
+    <message>
+        <source>Trainee: %1</source>
+        <translation>Auszubildende(r): %1</translation>
+    </message>
+    <message>
+        <source>History unavailable: %1 is read-only; it was left untouched</source>
+        <translation>Verlauf nicht verfügbar: %1 ist schreibgeschützt; sie wurde nicht verändert</translation>
+    </message>
+    <message>
+        <source>&amp;Replay a recording into this attempt…</source>
+        <translation>Aufzeichnung in diesen Versuch &amp;abspielen …</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen …</translation>
+    </message>
+    <message>
+        <source>The lesson cannot start</source>
+        <translation>Die Lektion kann nicht beginnen</translation>
+    </message>
+    <message>
+        <source>Start a lesson first; the recording is then replayed into it.</source>
+        <translation>Beginnen Sie zuerst eine Lektion; die Aufzeichnung wird dann darin abgespielt.</translation>
+    </message>
+    <message>
+        <source>Replay a recording</source>
+        <translation>Aufzeichnung abspielen</translation>
+    </message>
+    <message>
+        <source>Recordings (*.msrec)</source>
+        <translation>Aufzeichnungen (*.msrec)</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable recording.</source>
+        <translation>%1 ist keine lesbare Aufzeichnung.</translation>
+    </message>
+    <message>
+        <source>Settings saved; the solver applies from the next attempt.</source>
+        <translation>Einstellungen gespeichert; der Löser gilt ab dem nächsten Versuch.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MotionScalingDialog</name>
+    <message>
+        <source>Motion scaling</source>
+        <translation>Bewegungsskalierung</translation>
+    </message>
+    <message>
+        <source> mm per mm</source>
+        <translation> mm pro mm</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Hand motion per scene motion:</source>
+        <translation>Handbewegung pro Szenenbewegung:</translation>
+    </message>
+    <message>
+        <source>Fixed scene point (x, y, z):</source>
+        <translation>Fester Szenenpunkt (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::PivotWizard</name>
+    <message>
+        <source>Pivot the tool</source>
+        <translation>Instrument schwenken</translation>
+    </message>
+    <message>
+        <source>Hold the tip still in the divot and tilt the tool in every direction (at least %1°). Poses are collected automatically.</source>
+        <translation>Halten Sie die Spitze ruhig in der Mulde und neigen Sie das Instrument in alle Richtungen (mindestens %1°). Die Posen werden automatisch gesammelt.</translation>
+    </message>
+    <message>
+        <source>Spread %1° — enough</source>
+        <translation>Streuung %1° — ausreichend</translation>
+    </message>
+    <message>
+        <source>Spread %1° — tilt further</source>
+        <translation>Streuung %1° — weiter neigen</translation>
+    </message>
+    <message>
+        <source>Tip offset</source>
+        <translation>Spitzenversatz</translation>
+    </message>
+    <message>
+        <source>Collect again</source>
+        <translation>Erneut sammeln</translation>
+    </message>
+    <message>
+        <source>Tip (tool frame): %1, %2, %3 mm
+Pivot (tracker frame): %4, %5, %6 mm
+RMS error %7 mm, largest %8 mm
+%9 poses, spread %10°</source>
+        <translation>Spitze (Instrumentsystem): %1, %2, %3 mm
+Drehpunkt (Trackersystem): %4, %5, %6 mm
+RMS-Fehler %7 mm, größter %8 mm
+%9 Posen, Streuung %10°</translation>
+    </message>
+    <message>
+        <source>Pivot calibration</source>
+        <translation>Pivot-Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Instrument</translation>
+    </message>
+    <message>
+        <source>Choose the tracked device of the tool to calibrate.</source>
+        <translation>Wählen Sie das getrackte Gerät des zu kalibrierenden Instruments.</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Linke Hand</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Rechte Hand</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Gerät:</translation>
+    </message>
+    <message>
+        <source>Hand:</source>
+        <translation>Hand:</translation>
+    </message>
+    <message>
+        <source>Accepted: the error is within the threshold.</source>
+        <translation>Angenommen: der Fehler liegt innerhalb der Schwelle.</translation>
+    </message>
+    <message>
+        <source>Too few poses: collect again.</source>
+        <translation>Zu wenige Posen: erneut sammeln.</translation>
+    </message>
+    <message>
+        <source>The tracker sent invalid poses: collect again.</source>
+        <translation>Der Tracker hat ungültige Posen gesendet: erneut sammeln.</translation>
+    </message>
+    <message>
+        <source>The tool was not tilted enough: collect again.</source>
+        <translation>Das Instrument wurde nicht genug geneigt: erneut sammeln.</translation>
+    </message>
+    <message>
+        <source>The error is above the threshold (the tip slipped or the tool bent): collect again.</source>
+        <translation>Der Fehler liegt über der Schwelle (die Spitze ist verrutscht oder das Instrument verbogen): erneut sammeln.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ProfileChooserDialog</name>
+    <message>
+        <source>Setup profile</source>
+        <translation>Einrichtungsprofil</translation>
+    </message>
+    <message>
+        <source>Use</source>
+        <translation>Verwenden</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Import setup profile</source>
+        <translation>Einrichtungsprofil importieren</translation>
+    </message>
+    <message>
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>Export setup profile</source>
+        <translation>Einrichtungsprofil exportieren</translation>
+    </message>
+    <message>
+        <source>%1 — %2 by %3</source>
+        <translation>%1 — %2 von %3</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>FRE %1 mm</source>
+        <translation>FRE %1 mm</translation>
+    </message>
+    <message>
+        <source>TRE %1 mm</source>
+        <translation>TRE %1 mm</translation>
+    </message>
+    <message>
+        <source>Cannot read %1.</source>
+        <translation>%1 kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>The profile could not be stored: %1</source>
+        <translation>Das Profil konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The file is not a JSON document.</source>
+        <translation>Die Datei ist kein JSON-Dokument.</translation>
+    </message>
+    <message>
+        <source>The file is not a microsim setup profile (%1).</source>
+        <translation>Die Datei ist kein microsim-Einrichtungsprofil (%1).</translation>
+    </message>
+    <message>
+        <source>The field "%1" is missing.</source>
+        <translation>Das Feld „%1“ fehlt.</translation>
+    </message>
+    <message>
+        <source>The field "%1" has the wrong type.</source>
+        <translation>Das Feld „%1“ hat den falschen Typ.</translation>
+    </message>
+    <message>
+        <source>The field "%1" has a value that is not allowed.</source>
+        <translation>Das Feld „%1“ hat einen unzulässigen Wert.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::RegistrationWizard</name>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Type each point's scene position, hold the tip on it and press Touch. Three fiducials at least; check points measure the error elsewhere.</source>
+        <translation>Geben Sie die Szenenposition jedes Punktes ein, halten Sie die Spitze darauf und drücken Sie „Antippen“. Mindestens drei Passermarken; Kontrollpunkte messen den Fehler an anderer Stelle.</translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation>Punkt hinzufügen</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>Antippen</translation>
+    </message>
+    <message>
+        <source>Registration</source>
+        <translation>Registrierung</translation>
+    </message>
+    <message>
+        <source>FRE (fit): %1 mm RMS, %2 mm largest</source>
+        <translation>FRE (Anpassung): %1 mm RMS, größter %2 mm</translation>
+    </message>
+    <message numerus="yes">
+        <source>TRE (%n check point(s)): %1 mm RMS, %2 mm largest</source>
+        <translation><numerusform>TRE (%n Kontrollpunkt): %1 mm RMS, größter %2 mm</numerusform><numerusform>TRE (%n Kontrollpunkte): %1 mm RMS, größter %2 mm</numerusform></translation>
+    </message>
+    <message>
+        <source>No check points: the TRE is unknown.</source>
+        <translation>Keine Kontrollpunkte: der TRE ist unbekannt.</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Scene x</source>
+        <translation>Szene x</translation>
+    </message>
+    <message>
+        <source>Scene y</source>
+        <translation>Szene y</translation>
+    </message>
+    <message>
+        <source>Scene z</source>
+        <translation>Szene z</translation>
+    </message>
+    <message>
+        <source>Tracker x</source>
+        <translation>Tracker x</translation>
+    </message>
+    <message>
+        <source>Tracker y</source>
+        <translation>Tracker y</translation>
+    </message>
+    <message>
+        <source>Tracker z</source>
+        <translation>Tracker z</translation>
+    </message>
+    <message>
+        <source>Fiducial</source>
+        <translation>Passermarke</translation>
+    </message>
+    <message>
+        <source>Check point</source>
+        <translation>Kontrollpunkt</translation>
+    </message>
+    <message>
+        <source>Registered.</source>
+        <translation>Registriert.</translation>
+    </message>
+    <message>
+        <source>Touch at least three fiducials.</source>
+        <translation>Tippen Sie mindestens drei Passermarken an.</translation>
+    </message>
+    <message>
+        <source>Every point needs both positions.</source>
+        <translation>Jeder Punkt braucht beide Positionen.</translation>
+    </message>
+    <message>
+        <source>A position is not a number.</source>
+        <translation>Eine Position ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>The fiducials lie on one line: spread them out.</source>
+        <translation>Die Passermarken liegen auf einer Linie: verteilen Sie sie.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ResultsPage</name>
+    <message>
+        <source>Metric</source>
+        <translation>Kennzahl</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Advice</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Noch einmal</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Zurück zu den Lektionen</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Pierce angles&lt;/b&gt; (0° = perpendicular; red entry, blue exit)</source>
+        <translation>&lt;b&gt;Einstichwinkel&lt;/b&gt; (0° = senkrecht; rot Einstich, blau Ausstich)</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Lernen</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;%1 — %2&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;%1 — %2&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='font-size:28pt'&gt;–&lt;/span&gt;</source>
+        <translation>&lt;span style='font-size:28pt'&gt;–&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Not scored</source>
+        <translation>Nicht bewertet</translation>
+    </message>
+    <message>
+        <source>&lt;span style='font-size:28pt'&gt;&lt;b&gt;%1&lt;/b&gt; / 100&lt;/span&gt;</source>
+        <translation>&lt;span style='font-size:28pt'&gt;&lt;b&gt;%1&lt;/b&gt; / 100&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#1b7f3a; font-size:16pt'&gt;Passed&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#1b7f3a; font-size:16pt'&gt;Bestanden&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00020; font-size:16pt'&gt;Not passed yet&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00020; font-size:16pt'&gt;Noch nicht bestanden&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Scored from an incomplete recording.</source>
+        <translation>Aus einer unvollständigen Aufzeichnung bewertet.</translation>
+    </message>
+    <message>
+        <source>%1 (target %2)</source>
+        <translation>%1 (Ziel %2)</translation>
+    </message>
+    <message>
+        <source>Good.</source>
+        <translation>Gut.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewCharts</name>
+    <message>
+        <source>Score over attempts</source>
+        <translation>Punkte über die Versuche</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Pass mark</source>
+        <translation>Bestehensgrenze</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewPage</name>
+    <message>
+        <source>Export CSV…</source>
+        <translation>CSV exportieren …</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Sign out</source>
+        <translation>Abmelden</translation>
+    </message>
+    <message>
+        <source>Group:</source>
+        <translation>Gruppe:</translation>
+    </message>
+    <message>
+        <source>Best score (attempts). ✓ passed, ★ proficient: the pass mark on two consecutive Test attempts. Double-click a cell for the history.</source>
+        <translation>Beste Punktzahl (Versuche). ✓ bestanden, ★ sicher beherrscht: die Bestehensgrenze in zwei aufeinanderfolgenden Prüfungsversuchen. Doppelklick auf eine Zelle zeigt den Verlauf.</translation>
+    </message>
+    <message>
+        <source>PDF report…</source>
+        <translation>PDF-Bericht …</translation>
+    </message>
+    <message>
+        <source>Trainee:</source>
+        <translation>Trainee:</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lektion:</translation>
+    </message>
+    <message>
+        <source>Overview</source>
+        <translation>Übersicht</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <source>The history could not be read.</source>
+        <translation>Der Verlauf konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Instructor: %1</source>
+        <translation>Ausbilder: %1</translation>
+    </message>
+    <message>
+        <source>Trainee: %1</source>
+        <translation>Trainee: %1</translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation>Alle Gruppen</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Trainee</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n attempt(s), %1 finished</source>
+        <translation><numerusform>%n Versuch, %1 beendet</numerusform><numerusform>%n Versuche, %1 beendet</numerusform></translation>
+    </message>
+    <message>
+        <source>That attempt could not be read.</source>
+        <translation>Dieser Versuch konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Only instructors can add notes.</source>
+        <translation>Nur Ausbilder können Notizen hinzufügen.</translation>
+    </message>
+    <message>
+        <source>The note could not be stored.</source>
+        <translation>Die Notiz konnte nicht gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Note added.</source>
+        <translation>Notiz hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>Export attempts as CSV</source>
+        <translation>Versuche als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported the attempts to %1.</source>
+        <translation>Die Versuche wurden nach %1 exportiert.</translation>
+    </message>
+    <message>
+        <source>Choose a trainee first.</source>
+        <translation>Wählen Sie zuerst einen Trainee.</translation>
+    </message>
+    <message>
+        <source>Save the report as PDF</source>
+        <translation>Bericht als PDF speichern</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Saved the report to %1.</source>
+        <translation>Der Bericht wurde unter %1 gespeichert.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewReport</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>You may not export these attempts.</source>
+        <translation>Sie dürfen diese Versuche nicht exportieren.</translation>
+    </message>
+    <message>
+        <source>The export failed: %1</source>
+        <translation>Der Export ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Training report: %1</source>
+        <translation>Trainingsbericht: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Group: %1</source>
+        <translation>Gruppe: %1</translation>
+    </message>
+    <message>
+        <source>Printed %1</source>
+        <translation>Gedruckt am %1</translation>
+    </message>
+    <message>
+        <source>Attempts</source>
+        <translation>Versuche</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Started</source>
+        <translation>Begonnen</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Bestanden</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>No attempts yet.</source>
+        <translation>Noch keine Versuche.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewText</name>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Weglänge, linke Hand</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Weglänge, rechte Hand</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Bewegungen</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Laufruhe</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Leerlaufzeit</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Nachgriffe</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Fadenrisse</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Größte Gewebedehnung</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Gewebeschäden</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Wanddurchstiche</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Einstichwinkel</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ausstichwinkel</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Stichabstand</translation>
+    </message>
+    <message>
+        <source>Bite (wall thicknesses)</source>
+        <translation>Stichabstand (Wanddicken)</translation>
+    </message>
+    <message>
+        <source>Full-thickness passages</source>
+        <translation>Durchstiche durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Hinterwand gefasst</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Nähte</translation>
+    </message>
+    <message>
+        <source>Bite asymmetry</source>
+        <translation>Asymmetrie der Stiche</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Nahtabstand</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Triangulationsfehler</translation>
+    </message>
+    <message>
+        <source>Took longer than the target time.</source>
+        <translation>Länger als die Zielzeit gebraucht.</translation>
+    </message>
+    <message>
+        <source>The instruments travelled further than needed.</source>
+        <translation>Die Instrumente haben einen längeren Weg als nötig zurückgelegt.</translation>
+    </message>
+    <message>
+        <source>Movements were jerky; aim for smooth, continuous motion.</source>
+        <translation>Die Bewegungen waren ruckartig; auf ruhige, fließende Bewegungen achten.</translation>
+    </message>
+    <message>
+        <source>Long pauses with both hands still.</source>
+        <translation>Lange Pausen mit beiden Händen in Ruhe.</translation>
+    </message>
+    <message>
+        <source>The tissue was stretched too far.</source>
+        <translation>Das Gewebe wurde zu stark gedehnt.</translation>
+    </message>
+    <message>
+        <source>Too many re-grasps.</source>
+        <translation>Zu viele Nachgriffe.</translation>
+    </message>
+    <message>
+        <source>The wall was not passed with the needle.</source>
+        <translation>Die Wand wurde nicht mit der Nadel durchstochen.</translation>
+    </message>
+    <message>
+        <source>The needle entered too obliquely; enter perpendicular to the wall.</source>
+        <translation>Die Nadel ist zu schräg eingestochen; senkrecht zur Wand einstechen.</translation>
+    </message>
+    <message>
+        <source>The needle came out too obliquely; follow its curve.</source>
+        <translation>Die Nadel ist zu schräg ausgetreten; ihrer Krümmung folgen.</translation>
+    </message>
+    <message>
+        <source>Bites too far from the edge.</source>
+        <translation>Stiche zu weit vom Rand entfernt.</translation>
+    </message>
+    <message>
+        <source>Bites too close to the edge.</source>
+        <translation>Stiche zu nah am Rand.</translation>
+    </message>
+    <message>
+        <source>Some passages did not go through the whole wall.</source>
+        <translation>Einige Durchstiche gingen nicht durch die ganze Wand.</translation>
+    </message>
+    <message>
+        <source>The two bites of a stitch differ in length.</source>
+        <translation>Die beiden Stiche einer Naht sind unterschiedlich lang.</translation>
+    </message>
+    <message>
+        <source>Not all stitches were completed.</source>
+        <translation>Nicht alle Nähte wurden fertiggestellt.</translation>
+    </message>
+    <message>
+        <source>Too few stitches.</source>
+        <translation>Zu wenige Nähte.</translation>
+    </message>
+    <message>
+        <source>More stitches than needed.</source>
+        <translation>Mehr Nähte als nötig.</translation>
+    </message>
+    <message>
+        <source>The first stitches are not spaced 120° apart.</source>
+        <translation>Die ersten Nähte liegen nicht 120° auseinander.</translation>
+    </message>
+    <message>
+        <source>The back wall was caught: the lumen would be closed.</source>
+        <translation>Die Hinterwand wurde gefasst: das Lumen wäre verschlossen.</translation>
+    </message>
+    <message>
+        <source>The suture broke.</source>
+        <translation>Der Faden ist gerissen.</translation>
+    </message>
+    <message>
+        <source>The tissue was torn or over-stretched.</source>
+        <translation>Das Gewebe wurde gerissen oder überdehnt.</translation>
+    </message>
+    <message>
+        <source>%1: not measured in this attempt.</source>
+        <translation>%1: in diesem Versuch nicht gemessen.</translation>
+    </message>
+    <message>
+        <source>%1 too high.</source>
+        <translation>%1 zu hoch.</translation>
+    </message>
+    <message>
+        <source>%1 too low.</source>
+        <translation>%1 zu niedrig.</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Prüfung</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Lernen</translation>
+    </message>
+    <message>
+        <source>In progress</source>
+        <translation>Läuft</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Beendet</translation>
+    </message>
+    <message>
+        <source>Interrupted</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>Entry angle (°)</source>
+        <translation>Einstichwinkel (°)</translation>
+    </message>
+    <message>
+        <source>Exit angle (°)</source>
+        <translation>Ausstichwinkel (°)</translation>
+    </message>
+    <message>
+        <source>Bite (mm)</source>
+        <translation>Stichabstand (mm)</translation>
+    </message>
+    <message>
+        <source>Bite (walls)</source>
+        <translation>Stichabstand (Wände)</translation>
+    </message>
+    <message>
+        <source>Position (°)</source>
+        <translation>Position (°)</translation>
+    </message>
+    <message>
+        <source>Full thickness</source>
+        <translation>Ganze Wand</translation>
+    </message>
+    <message>
+        <source>Back wall</source>
+        <translation>Hinterwand</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::SignInPage</name>
+    <message>
+        <source>&lt;h2&gt;Who is practising?&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Wer übt?&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Auszubildende(r)</translation>
+    </message>
+    <message>
+        <source>Sign in</source>
+        <translation>Anmelden</translation>
+    </message>
+    <message>
+        <source>Your name</source>
+        <translation>Ihr Name</translation>
+    </message>
+    <message>
+        <source>Create and sign in</source>
+        <translation>Anlegen und anmelden</translation>
+    </message>
+    <message>
+        <source>New trainee:</source>
+        <translation>Neue(r) Auszubildende(r):</translation>
+    </message>
+    <message>
+        <source>Instructor</source>
+        <translation>Ausbilder(in)</translation>
+    </message>
+    <message>
+        <source>Sign in as instructor</source>
+        <translation>Als Ausbilder(in) anmelden</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>The history is unavailable: you can practise, but nothing will be stored.</source>
+        <translation>Der Verlauf ist nicht verfügbar: Sie können üben, aber nichts wird gespeichert.</translation>
+    </message>
+    <message>
+        <source>Guest</source>
+        <translation>Gast</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Geben Sie zuerst einen Namen ein.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists; pick them from the list.</source>
+        <translation>Eine Person namens %1 gibt es bereits; wählen Sie sie aus der Liste.</translation>
+    </message>
+    <message>
+        <source>The trainee could not be created (%1).</source>
+        <translation>Die/der Auszubildende konnte nicht angelegt werden (%1).</translation>
+    </message>
+    <message>
+        <source>Instructors need the history to sign in.</source>
+        <translation>Ausbilder brauchen zum Anmelden den Verlauf.</translation>
+    </message>
+    <message>
+        <source>Unknown instructor or wrong password.</source>
+        <translation>Unbekannte(r) Ausbilder(in) oder falsches Passwort.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::TrackerStatusWidget</name>
+    <message>
+        <source>Tracker connected</source>
+        <translation>Tracker verbunden</translation>
+    </message>
+    <message>
+        <source>Tracker not connected</source>
+        <translation>Tracker nicht verbunden</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dropped</source>
+        <translation><numerusform>%n verworfen</numerusform><numerusform>%n verworfen</numerusform></translation>
+    </message>
+    <message>
+        <source>No tracker</source>
+        <translation>Kein Tracker</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::TraineeHistoryView</name>
+    <message>
+        <source>Attempt</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Beendet</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Bestanden</translation>
+    </message>
+    <message>
+        <source>No finished attempts in this lesson yet.</source>
+        <translation>Noch keine beendeten Versuche in dieser Lektion.</translation>
+    </message>
+    <message>
+        <source>%1 — not measured in this lesson</source>
+        <translation>%1 – in dieser Lektion nicht gemessen</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::Viewport</name>
+    <message>
+        <source>F1: keys</source>
+        <translation>F1: Tasten</translation>
+    </message>
+    <message>
+        <source>Left hand active</source>
+        <translation>Linke Hand aktiv</translation>
+    </message>
+    <message>
+        <source>Right hand active</source>
+        <translation>Rechte Hand aktiv</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::settings::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Scene default</source>
+        <translation>Vorgabe der Szene</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start.</source>
+        <translation>Wirkt beim nächsten Start.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::settings::Tunables</name>
+    <message>
+        <source>As the lesson's scene says</source>
+        <translation>Wie in der Szene der Lektion</translation>
+    </message>
+    <message>
+        <source>Quasi-static (the paper's)</source>
+        <translation>Quasistatisch (wie im Artikel)</translation>
+    </message>
+    <message>
+        <source>Newton with multigrid</source>
+        <translation>Newton mit Mehrgitter</translation>
+    </message>
+    <message>
+        <source>Implicit Euler</source>
+        <translation>Implizites Euler-Verfahren</translation>
+    </message>
+    <message>
+        <source>Tissue solver</source>
+        <translation>Gewebelöser</translation>
+    </message>
+    <message>
+        <source>The tissue solver of live attempts; graded replays use the same one.</source>
+        <translation>Der Gewebelöser für Live-Versuche; bewertete Wiederholungen nutzen denselben.</translation>
+    </message>
+    <message>
+        <source>Iteration budget</source>
+        <translation>Iterationsbudget</translation>
+    </message>
+    <message>
+        <source>Solver iterations per step; 0 keeps the scene's.</source>
+        <translation>Löser-Iterationen pro Schritt; 0 behält die der Szene.</translation>
+    </message>
+    <message>
+        <source>Mono</source>
+        <translation>Mono</translation>
+    </message>
+    <message>
+        <source>Quad-buffer stereo</source>
+        <translation>Quad-Buffer-Stereo</translation>
+    </message>
+    <message>
+        <source>Anaglyph (red/cyan)</source>
+        <translation>Anaglyphe (rot/cyan)</translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation>Nebeneinander</translation>
+    </message>
+    <message>
+        <source>Stereo</source>
+        <translation>Stereo</translation>
+    </message>
+    <message>
+        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
+        <translation>Quad-Buffer weicht auf Anaglyphe aus, wo die Anzeige es nicht kann.</translation>
+    </message>
+    <message>
+        <source>QWERTY / QWERTZ (W A S D, Q E)</source>
+        <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
+    </message>
+    <message>
+        <source>AZERTY (Z Q S D, A E)</source>
+        <translation>AZERTY (Z Q S D, A E)</translation>
+    </message>
+    <message>
+        <source>Key map</source>
+        <translation>Tastenbelegung</translation>
+    </message>
+    <message>
+        <source>Which letter keys move the tools; the arrows and Space stay the same.</source>
+        <translation>Welche Buchstabentasten die Instrumente bewegen; Pfeiltasten und Leertaste bleiben gleich.</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>Millimeter</translation>
+    </message>
+    <message>
+        <source>Micrometres</source>
+        <translation>Mikrometer</translation>
+    </message>
+    <message>
+        <source>Length units</source>
+        <translation>Längeneinheit</translation>
+    </message>
+    <message>
+        <source>Units of lengths on the results page.</source>
+        <translation>Einheit der Längen auf der Ergebnisseite.</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemvorgabe</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>Englisch</translation>
+    </message>
+    <message>
+        <source>German</source>
+        <translation>Deutsch</translation>
+    </message>
+    <message>
+        <source>Spanish</source>
+        <translation>Spanisch</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The interface language.</source>
+        <translation>Die Sprache der Oberfläche.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::tracking::ManualSource</name>
+    <message>
+        <source>Tab — switch hand</source>
+        <translation>Tab — Hand wechseln</translation>
+    </message>
+    <message>
+        <source>A / D — move left / right</source>
+        <translation>A / D — nach links / rechts bewegen</translation>
+    </message>
+    <message>
+        <source>W / S — move up / down</source>
+        <translation>W / S — nach oben / unten bewegen</translation>
+    </message>
+    <message>
+        <source>Q / E — move away / toward you</source>
+        <translation>Q / E — von Ihnen weg / zu Ihnen hin bewegen</translation>
+    </message>
+    <message>
+        <source>← / → — turn the tool</source>
+        <translation>← / → — Instrument drehen</translation>
+    </message>
+    <message>
+        <source>↑ / ↓ — tilt the tool</source>
+        <translation>↑ / ↓ — Instrument neigen</translation>
+    </message>
+    <message>
+        <source>Space (hold) — close the jaws</source>
+        <translation>Leertaste (halten) — Branchen schließen</translation>
+    </message>
+    <message>
+        <source>Shift — fine steps</source>
+        <translation>Umschalt — feine Schritte</translation>
+    </message>
+    <message>
+        <source>R — reset the tools</source>
+        <translation>R — Instrumente zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Right drag — move the tool in the view plane</source>
+        <translation>Rechts ziehen — Instrument in der Bildebene bewegen</translation>
+    </message>
+    <message>
+        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
+        <translation>Links ziehen — umkreisen; Mitte oder Umschalt ziehen — verschieben; Rad — zoomen; Strg+Rad — fokussieren</translation>
+    </message>
+    <message>
+        <source>F1 — show or hide this help</source>
+        <translation>F1 — diese Hilfe ein- oder ausblenden</translation>
     </message>
 </context>
 </TS>

@@ -232,7 +232,7 @@
     </message>
     <message>
         <source>not valid JSON</source>
-        <translation>JSON no válido</translation>
+        <translation>no es JSON válido</translation>
     </message>
     <message>
         <source>wrong type or length</source>
@@ -349,10 +349,6 @@
     <message>
         <source>pivot or register</source>
         <translation>pivot o register</translation>
-    </message>
-    <message>
-        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]</source>
-        <translation>Uso: microsim-cli calibrate pivot|register --input ARCHIVO [--json ARCHIVO]</translation>
     </message>
     <message>
         <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
@@ -591,10 +587,6 @@
         <translation>Rechazar poses que se muevan más rápido que &lt;mm/s&gt; (predeterminado 2000).</translation>
     </message>
     <message>
-        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--once] [--max-speed MM_S]</source>
-        <translation>Uso: microsim-cli track --igtl HOST:PUERTO [--duration S] [--json ARCHIVO] [--once] [--max-speed MM_S]</translation>
-    </message>
-    <message>
         <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
         <translation>microsim-cli track: indique el servidor como --igtl HOST:PUERTO</translation>
     </message>
@@ -622,6 +614,414 @@
         <source>microsim-cli track: cannot write %1</source>
         <translation>microsim-cli track: no se puede escribir %1</translation>
     </message>
+    <message>
+        <source>sample %1 of the tracker stream: bad "%2"</source>
+        <translation>muestra %1 del flujo del rastreador: «%2» incorrecto</translation>
+    </message>
+    <message>
+        <source>not a tracker stream this version reads</source>
+        <translation>no es un flujo del rastreador que esta versión lea</translation>
+    </message>
+    <message>
+        <source>choose the device with --device (the stream holds: %1)</source>
+        <translation>elija el dispositivo con --device (el flujo contiene: %1)</translation>
+    </message>
+    <message>
+        <source>pivot on a tracker stream: the device to calibrate.</source>
+        <translation>pivot sobre un flujo del rastreador: el dispositivo que se calibra.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli calibrate pivot|register --input FILE [--device NAME] [--json FILE]</source>
+        <translation>Uso: microsim-cli calibrate pivot|register --input ARCHIVO [--device NOMBRE] [--json ARCHIVO]</translation>
+    </message>
+    <message>
+        <source>score a recorded attempt with a rubric (and store it in the history)</source>
+        <translation>evaluar un intento grabado con una rúbrica (y guardarlo en el historial)</translation>
+    </message>
+    <message>
+        <source>the history database: migrate, backup, restore, export CSV, trainees</source>
+        <translation>la base de datos del historial: migrar, copia de seguridad, restaurar, exportar CSV, residentes</translation>
+    </message>
+    <message>
+        <source>cannot create the folder for %1</source>
+        <translation>no se puede crear la carpeta para %1</translation>
+    </message>
+    <message>
+        <source>cannot open %1</source>
+        <translation>no se puede abrir %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a microsim database or is damaged; it was left untouched</source>
+        <translation>%1 no es una base de datos de microsim o está dañada; no se ha modificado</translation>
+    </message>
+    <message>
+        <source>%1 is locked by another program</source>
+        <translation>%1 está bloqueada por otro programa</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer microsim</source>
+        <translation>%1 fue escrita por una versión más reciente de microsim</translation>
+    </message>
+    <message>
+        <source>updating %1 failed; it was left as it was</source>
+        <translation>la actualización de %1 falló; se dejó como estaba</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; it was left untouched</source>
+        <translation>%1 es de solo lectura; no se ha modificado</translation>
+    </message>
+    <message>
+        <source>the database is not open</source>
+        <translation>la base de datos no está abierta</translation>
+    </message>
+    <message>
+        <source>not allowed for this user</source>
+        <translation>no permitido para este usuario</translation>
+    </message>
+    <message>
+        <source>no such person or attempt</source>
+        <translation>no existe esa persona o ese intento</translation>
+    </message>
+    <message>
+        <source>the attempt is already finished</source>
+        <translation>el intento ya está terminado</translation>
+    </message>
+    <message>
+        <source>that name is taken</source>
+        <translation>ese nombre ya está en uso</translation>
+    </message>
+    <message>
+        <source>empty name, or a password shorter than %1 characters</source>
+        <translation>nombre vacío o contraseña de menos de %1 caracteres</translation>
+    </message>
+    <message>
+        <source>unknown instructor or wrong password</source>
+        <translation>instructor desconocido o contraseña incorrecta</translation>
+    </message>
+    <message>
+        <source>not possible on a PostgreSQL server (use pg_dump and pg_restore there)</source>
+        <translation>no es posible en un servidor PostgreSQL (use allí pg_dump y pg_restore)</translation>
+    </message>
+    <message>
+        <source>the file is not a microsim history</source>
+        <translation>el archivo no es un historial de microsim</translation>
+    </message>
+    <message>
+        <source>the backup was written by a newer microsim</source>
+        <translation>la copia de seguridad fue escrita por una versión más reciente de microsim</translation>
+    </message>
+    <message>
+        <source>the file could not be written (it may exist already)</source>
+        <translation>no se pudo escribir el archivo (quizá ya existe)</translation>
+    </message>
+    <message>
+        <source>the database reported an error</source>
+        <translation>la base de datos informó de un error</translation>
+    </message>
+    <message>
+        <source>instructor</source>
+        <translation>instructor</translation>
+    </message>
+    <message>
+        <source>trainee</source>
+        <translation>residente</translation>
+    </message>
+    <message>
+        <source>The history: an SQLite &lt;file&gt; or a postgresql://user@host:port/db URL.</source>
+        <translation>El historial: un archivo SQLite &lt;file&gt; o una URL postgresql://user@host:port/db.</translation>
+    </message>
+    <message>
+        <source>add-trainee: the trainee's &lt;group&gt;.</source>
+        <translation>add-trainee: el grupo &lt;group&gt; del residente.</translation>
+    </message>
+    <message>
+        <source>export-csv: sign in as instructor &lt;name&gt; (password on stdin).</source>
+        <translation>export-csv: iniciar sesión como instructor &lt;name&gt; (contraseña por stdin).</translation>
+    </message>
+    <message>
+        <source>add-instructor: read the password from standard input.</source>
+        <translation>add-instructor: leer la contraseña de la entrada estándar.</translation>
+    </message>
+    <message>
+        <source>list-trainees: also write JSON to &lt;file&gt;.</source>
+        <translation>list-trainees: escribir también JSON en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>migrate, backup, restore, export-csv, list-trainees, add-trainee or add-instructor</source>
+        <translation>migrate, backup, restore, export-csv, list-trainees, add-trainee o add-instructor</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db FILE_OR_URL]</source>
+        <translation>Uso: microsim-cli db migrate|backup ARCHIVO|restore ARCHIVO|export-csv ARCHIVO --instructor NOMBRE|list-trainees|add-trainee NOMBRE [--group G]|add-instructor NOMBRE --password-stdin [--db ARCHIVO_O_URL]</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: add-instructor reads the password from stdin: give --password-stdin</source>
+        <translation>microsim-cli db: add-instructor lee la contraseña de stdin: indique --password-stdin</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: export-csv needs --instructor NAME (password on stdin)</source>
+        <translation>microsim-cli db: export-csv necesita --instructor NOMBRE (contraseña por stdin)</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: %1</source>
+        <translation>microsim-cli db: %1</translation>
+    </message>
+    <message>
+        <source>microsim-cli db %1: %2</source>
+        <translation>microsim-cli db %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: schema version %2</source>
+        <translation>%1: versión de esquema %2</translation>
+    </message>
+    <message>
+        <source>backed up %1 to %2</source>
+        <translation>copia de seguridad de %1 en %2</translation>
+    </message>
+    <message>
+        <source>restored %1 from %2 (schema version %3)</source>
+        <translation>%1 restaurada desde %2 (versión de esquema %3)</translation>
+    </message>
+    <message>
+        <source>microsim-cli db: cannot write %1</source>
+        <translation>microsim-cli db: no se puede escribir %1</translation>
+    </message>
+    <message>
+        <source>wrote %1</source>
+        <translation>escrito %1</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>role</source>
+        <translation>rol</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>grupo</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>nombre</translation>
+    </message>
+    <message>
+        <source>added trainee %1 (id %2)</source>
+        <translation>residente %1 añadido (id %2)</translation>
+    </message>
+    <message>
+        <source>added instructor %1 (id %2)</source>
+        <translation>instructor %1 añadido (id %2)</translation>
+    </message>
+    <message>
+        <source>tissue link %1 over-stretched (%2 %)</source>
+        <translation>enlace de tejido %1 sobreestirado (%2 %)</translation>
+    </message>
+    <message numerus="yes">
+        <source>tissue tears: %n link(s) removed</source>
+        <translation><numerusform>el tejido se desgarra: %n enlace eliminado</numerusform><numerusform>el tejido se desgarra: %n enlaces eliminados</numerusform></translation>
+    </message>
+    <message>
+        <source>cannot open the rubric file</source>
+        <translation>no se puede abrir el archivo de rúbrica</translation>
+    </message>
+    <message>
+        <source>wrong type</source>
+        <translation>tipo incorrecto</translation>
+    </message>
+    <message>
+        <source>missing field</source>
+        <translation>falta un campo</translation>
+    </message>
+    <message>
+        <source>unknown metric</source>
+        <translation>métrica desconocida</translation>
+    </message>
+    <message>
+        <source>invalid value</source>
+        <translation>valor no válido</translation>
+    </message>
+    <message>
+        <source>rubric</source>
+        <translation>rúbrica</translation>
+    </message>
+    <message>
+        <source>version %1, pass mark %2</source>
+        <translation>versión %1, nota de aprobado %2</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>grabación</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s)</source>
+        <translation><numerusform>%n fotograma</numerusform><numerusform>%n fotogramas</numerusform></translation>
+    </message>
+    <message>
+        <source>(unfinished: scored as far as it goes)</source>
+        <translation>(incompleta: evaluada hasta donde llega)</translation>
+    </message>
+    <message>
+        <source>score</source>
+        <translation>puntuación</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>aprobado</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>no aprobado</translation>
+    </message>
+    <message>
+        <source>never-event</source>
+        <translation>evento nunca admisible</translation>
+    </message>
+    <message>
+        <source>metric</source>
+        <translation>métrica</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>valor</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unidad</translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation>objetivo</translation>
+    </message>
+    <message>
+        <source>weight</source>
+        <translation>peso</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>puntos</translation>
+    </message>
+    <message>
+        <source>feedback</source>
+        <translation>comentario</translation>
+    </message>
+    <message>
+        <source>pierces</source>
+        <translation>punciones</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>%1 s, end %2, %3 → %4, entry %5°, exit %6°, bite %7 mm, at %8°</source>
+        <translation>%1 s, extremo %2, %3 → %4, entrada %5°, salida %6°, distancia al borde %7 mm, a %8°</translation>
+    </message>
+    <message>
+        <source>full thickness</source>
+        <translation>espesor completo</translation>
+    </message>
+    <message>
+        <source>back wall</source>
+        <translation>pared posterior</translation>
+    </message>
+    <message>
+        <source>not allowed</source>
+        <translation>no permitido</translation>
+    </message>
+    <message>
+        <source>not found</source>
+        <translation>no encontrado</translation>
+    </message>
+    <message>
+        <source>the attempt is no longer in progress</source>
+        <translation>el intento ya no está en curso</translation>
+    </message>
+    <message>
+        <source>the name is taken</source>
+        <translation>el nombre ya existe</translation>
+    </message>
+    <message>
+        <source>database error</source>
+        <translation>error de base de datos</translation>
+    </message>
+    <message>
+        <source>cannot open the history database %1</source>
+        <translation>no se puede abrir la base de datos de historial %1</translation>
+    </message>
+    <message>
+        <source>cannot store the attempt: %1</source>
+        <translation>no se puede guardar el intento: %1</translation>
+    </message>
+    <message>
+        <source>The recording &lt;file&gt; to score.</source>
+        <translation>La grabación &lt;file&gt; que se evalúa.</translation>
+    </message>
+    <message>
+        <source>The rubric &lt;file&gt; that grades it.</source>
+        <translation>La rúbrica &lt;file&gt; con la que se evalúa.</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; (default: the one the recording names).</source>
+        <translation>La escena &lt;file&gt; (por defecto: la que indica la grabación).</translation>
+    </message>
+    <message>
+        <source>Store the attempt in the history database &lt;file or URL&gt;.</source>
+        <translation>Guardar el intento en la base de datos de historial &lt;file or URL&gt;.</translation>
+    </message>
+    <message>
+        <source>The trainee the attempt belongs to (with --db; added when new).</source>
+        <translation>El alumno al que pertenece el intento (con --db; se crea si es nuevo).</translation>
+    </message>
+    <message>
+        <source>The lesson stored with the attempt (default: the rubric's id).</source>
+        <translation>La lección que se guarda con el intento (por defecto: el identificador de la rúbrica).</translation>
+    </message>
+    <message>
+        <source>The attempt's mode stored with --db: learn or test (default test).</source>
+        <translation>El modo del intento que se guarda con --db: learn o test (por defecto test).</translation>
+    </message>
+    <message>
+        <source>Write the score, metrics and pierces as JSON to &lt;file&gt;.</source>
+        <translation>Escribir la puntuación, las métricas y las punciones como JSON en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli score --recording REC --rubric FILE [--scene FILE] [--db FILE --trainee NAME [--lesson ID] [--mode learn|test]] [--json OUT]</source>
+        <translation>Uso: microsim-cli score --recording REC --rubric FILE [--scene FILE] [--db FILE --trainee NAME [--lesson ID] [--mode learn|test]] [--json OUT]</translation>
+    </message>
+    <message>
+        <source>--recording REC and --rubric FILE are required</source>
+        <translation>--recording REC y --rubric FILE son obligatorios</translation>
+    </message>
+    <message>
+        <source>--db and --trainee go together</source>
+        <translation>--db y --trainee van juntos</translation>
+    </message>
+    <message>
+        <source>--mode is learn or test, not '%1'</source>
+        <translation>--mode es learn o test, no '%1'</translation>
+    </message>
+    <message numerus="yes">
+        <source>scoring its %n complete frame(s)</source>
+        <translation><numerusform>se evalúa su %n fotograma completo</numerusform><numerusform>se evalúan sus %n fotogramas completos</numerusform></translation>
+    </message>
+    <message>
+        <source>the recording names no scene: give --scene FILE</source>
+        <translation>la grabación no indica ninguna escena: indique --scene FILE</translation>
+    </message>
+    <message>
+        <source>stored as attempt %1</source>
+        <translation>guardado como intento %1</translation>
+    </message>
+    <message>
+        <source>Write every accepted pose and channel value as a tracker stream to &lt;file&gt;.</source>
+        <translation>Escribir cada pose y valor de canal aceptados como flujo del rastreador en &lt;file&gt;.</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
+        <translation>Uso: microsim-cli track --igtl HOST:PUERTO [--duration S] [--json ARCHIVO] [--record ARCHIVO] [--once] [--max-speed MM_S]</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -645,16 +1045,654 @@
         <source>file</source>
         <translation>archivo</translation>
     </message>
+    <message>
+        <source>cannot create %1</source>
+        <translation>no se puede crear %1</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AttemptDetailView</name>
+    <message>
+        <source>Metric</source>
+        <translation>Métrica</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerancia</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Peso</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Feedback</source>
+        <translation>Comentario</translation>
+    </message>
+    <message>
+        <source>Pierce</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>A note for this attempt…</source>
+        <translation>Una nota sobre este intento…</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Añadir nota</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Métricas</translation>
+    </message>
+    <message>
+        <source>Pierces</source>
+        <translation>Pasos</translation>
+    </message>
+    <message>
+        <source>Annotations</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <source>Replay in 3D</source>
+        <translation>Reproducir en 3D</translation>
+    </message>
+    <message>
+        <source>To end</source>
+        <translation>Al final</translation>
+    </message>
+    <message>
+        <source>Choose an attempt in a trainee's history.</source>
+        <translation>Elija un intento en el historial de un residente.</translation>
+    </message>
+    <message>
+        <source>%1 — %2, %3, %4</source>
+        <translation>%1 — %2, %3, %4</translation>
+    </message>
+    <message>
+        <source>Score %1 of 100 (%2); rubric %3 version %4</source>
+        <translation>Puntuación %1 de 100 (%2); rúbrica %3 versión %4</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>aprobado</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>no aprobado</translation>
+    </message>
+    <message>
+        <source>No recording stored.</source>
+        <translation>No hay grabación guardada.</translation>
+    </message>
+    <message>
+        <source>The lesson's scene is not installed.</source>
+        <translation>La escena de la lección no está instalada.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>%1, %2:
+%3</source>
+        <translation>%1, %2:
+%3</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replay finished: %n frame(s).</source>
+        <translation><numerusform>Reproducción terminada: %n fotograma.</numerusform><numerusform>Reproducción terminada: %n fotogramas.</numerusform></translation>
+    </message>
+    <message>
+        <source>The stored recording is damaged.</source>
+        <translation>La grabación guardada está dañada.</translation>
+    </message>
+    <message>
+        <source>The lesson's scene could not be loaded.</source>
+        <translation>No se pudo cargar la escena de la lección.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %n frame(s)…</source>
+        <translation><numerusform>Reproduciendo %n fotograma…</numerusform><numerusform>Reproduciendo %n fotogramas…</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AttemptPage</name>
+    <message>
+        <source>Finish attempt</source>
+        <translation>Terminar el intento</translation>
+    </message>
+    <message>
+        <source>Abandon</source>
+        <translation>Abandonar</translation>
+    </message>
+    <message>
+        <source>The rubric %1 cannot be read (field %2, line %3).</source>
+        <translation>No se puede leer la rúbrica %1 (campo %2, línea %3).</translation>
+    </message>
+    <message>
+        <source>The scene %1 cannot be prepared: %2</source>
+        <translation>No se puede preparar la escena %1: %2</translation>
+    </message>
+    <message>
+        <source>The scene %1 cannot be loaded (field %2, line %3).</source>
+        <translation>No se puede cargar la escena %1 (campo %2, línea %3).</translation>
+    </message>
+    <message>
+        <source>Learn mode: follow the marks.</source>
+        <translation>Modo aprendizaje: siga las marcas.</translation>
+    </message>
+    <message>
+        <source>Test mode: graded, no hints.</source>
+        <translation>Modo examen: calificado, sin ayudas.</translation>
+    </message>
+    <message>
+        <source>This attempt is not stored (no history).</source>
+        <translation>Este intento no se guarda (sin historial).</translation>
+    </message>
+    <message>
+        <source>Replaying a recording…</source>
+        <translation>Reproduciendo una grabación…</translation>
+    </message>
+    <message>
+        <source>Every step is done: finish the attempt when you are ready.</source>
+        <translation>Todos los pasos están hechos: termine el intento cuando esté listo.</translation>
+    </message>
+    <message>
+        <source>Scoring…</source>
+        <translation>Calificando…</translation>
+    </message>
+    <message>
+        <source>The recording %1 could not be replayed for scoring.</source>
+        <translation>No se pudo reproducir la grabación %1 para calificarla.</translation>
+    </message>
+    <message>
+        <source>The score could not be stored (%1).</source>
+        <translation>No se pudo guardar la puntuación (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::CalibrationSession</name>
+    <message>
+        <source>Cannot read %1.</source>
+        <translation>No se puede leer %1.</translation>
+    </message>
+    <message>
+        <source>%1 is neither a recording nor a tracker stream.</source>
+        <translation>%1 no es ni una grabación ni un flujo del rastreador.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged.</source>
+        <translation>%1 está dañado.</translation>
+    </message>
+    <message>
+        <source>Save setup profile</source>
+        <translation>Guardar perfil de configuración</translation>
+    </message>
+    <message>
+        <source>The database is not open.</source>
+        <translation>La base de datos no está abierta.</translation>
+    </message>
+    <message>
+        <source>Profile name:</source>
+        <translation>Nombre del perfil:</translation>
+    </message>
+    <message>
+        <source>Calibrated by:</source>
+        <translation>Calibrado por:</translation>
+    </message>
+    <message>
+        <source>The profile could not be stored: %1</source>
+        <translation>No se pudo guardar el perfil: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Calibration</source>
+        <translation>&amp;Calibración</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Calibración</translation>
+    </message>
+    <message>
+        <source>Connect a tracker or open a tracker recording first.</source>
+        <translation>Conecte primero un rastreador o abra una grabación del rastreador.</translation>
+    </message>
+    <message>
+        <source>Connect to OpenIGTLink…</source>
+        <translation>Conectar a OpenIGTLink…</translation>
+    </message>
+    <message>
+        <source>Connect to OpenIGTLink</source>
+        <translation>Conectar a OpenIGTLink</translation>
+    </message>
+    <message>
+        <source>Server (host:port):</source>
+        <translation>Servidor (host:puerto):</translation>
+    </message>
+    <message>
+        <source>Give the server as host:port.</source>
+        <translation>Indique el servidor como host:puerto.</translation>
+    </message>
+    <message>
+        <source>Play a tracker recording…</source>
+        <translation>Reproducir una grabación del rastreador…</translation>
+    </message>
+    <message>
+        <source>Play a tracker recording</source>
+        <translation>Reproducir una grabación del rastreador</translation>
+    </message>
+    <message>
+        <source>Recordings (*.json *.msrec)</source>
+        <translation>Grabaciones (*.json *.msrec)</translation>
+    </message>
+    <message>
+        <source>Setup profile…</source>
+        <translation>Perfil de configuración…</translation>
+    </message>
+    <message>
+        <source>Save setup profile…</source>
+        <translation>Guardar perfil de configuración…</translation>
+    </message>
+    <message>
+        <source>Pivot calibration…</source>
+        <translation>Calibración por pivote…</translation>
+    </message>
+    <message>
+        <source>Registration…</source>
+        <translation>Registro…</translation>
+    </message>
+    <message>
+        <source>Forceps closure…</source>
+        <translation>Cierre de la pinza…</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Mano izquierda</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Mano derecha</translation>
+    </message>
+    <message>
+        <source>Forceps closure</source>
+        <translation>Cierre de la pinza</translation>
+    </message>
+    <message>
+        <source>Hand:</source>
+        <translation>Mano:</translation>
+    </message>
+    <message>
+        <source>Motion scaling…</source>
+        <translation>Escalado del movimiento…</translation>
+    </message>
+    <message>
+        <source>Latency…</source>
+        <translation>Latencia…</translation>
+    </message>
+    <message>
+        <source>Live view of the tools</source>
+        <translation>Vista en vivo de los instrumentos</translation>
+    </message>
+    <message>
+        <source>Calibrated tools</source>
+        <translation>Instrumentos calibrados</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ClosureDialog</name>
+    <message>
+        <source>Forceps closure</source>
+        <translation>Cierre de la pinza</translation>
+    </message>
+    <message>
+        <source>Open the jaws fully, then squeeze them shut a few times.</source>
+        <translation>Abra las mandíbulas del todo y luego ciérrelas apretando varias veces.</translation>
+    </message>
+    <message>
+        <source>Start again</source>
+        <translation>Empezar de nuevo</translation>
+    </message>
+    <message>
+        <source>Channel:</source>
+        <translation>Canal:</translation>
+    </message>
+    <message>
+        <source>No reading yet.</source>
+        <translation>Aún no hay lecturas.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Open %1 · closed %2 (%n reading(s))</source>
+        <translation><numerusform>Abierta %1 · cerrada %2 (%n lectura)</numerusform><numerusform>Abierta %1 · cerrada %2 (%n lecturas)</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::FeedbackText</name>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Longitud del recorrido</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Longitud del recorrido, mano izquierda</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Longitud del recorrido, mano derecha</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Movimientos</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Suavidad</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Tiempo inactivo</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Reagarres</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Roturas de sutura</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Mayor estiramiento del tejido</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Daño tisular</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Pasos por la pared</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Ángulo de entrada</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ángulo de salida</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Distancia del punto</translation>
+    </message>
+    <message>
+        <source>Bite in wall thicknesses</source>
+        <translation>Distancia del punto en grosores de pared</translation>
+    </message>
+    <message>
+        <source>Full-thickness bites</source>
+        <translation>Puntos de grosor completo</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Pared posterior atrapada</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Bite symmetry</source>
+        <translation>Simetría de los puntos</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Separación de los puntos</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Error de triangulación</translation>
+    </message>
+    <message>
+        <source>Take the same bite on both ends.</source>
+        <translation>Tome la misma distancia en ambos extremos.</translation>
+    </message>
+    <message>
+        <source>Pass through the whole wall, not only part of it.</source>
+        <translation>Atraviese toda la pared, no solo una parte.</translation>
+    </message>
+    <message>
+        <source>Enter closer to the cut edge.</source>
+        <translation>Entre más cerca del borde cortado.</translation>
+    </message>
+    <message>
+        <source>Enter further from the cut edge: the stitch may tear out.</source>
+        <translation>Entre más lejos del borde cortado: el punto puede desgarrarse.</translation>
+    </message>
+    <message>
+        <source>Enter the wall more perpendicularly.</source>
+        <translation>Entre en la pared de forma más perpendicular.</translation>
+    </message>
+    <message>
+        <source>Follow the needle's curve so it leaves the wall perpendicularly.</source>
+        <translation>Siga la curva de la aguja para que salga perpendicular a la pared.</translation>
+    </message>
+    <message>
+        <source>Re-grasp less: plan each grip.</source>
+        <translation>Reagarre menos: planifique cada agarre.</translation>
+    </message>
+    <message>
+        <source>Fewer pauses: keep the movement going.</source>
+        <translation>Menos pausas: mantenga el movimiento.</translation>
+    </message>
+    <message>
+        <source>Move more smoothly.</source>
+        <translation>Muévase con más suavidad.</translation>
+    </message>
+    <message>
+        <source>Shorter, more direct instrument paths.</source>
+        <translation>Recorridos del instrumento más cortos y directos.</translation>
+    </message>
+    <message>
+        <source>The back wall was caught: this closes the vessel.</source>
+        <translation>Se atrapó la pared posterior: esto cierra el vaso.</translation>
+    </message>
+    <message>
+        <source>The suture broke: pull more gently.</source>
+        <translation>La sutura se rompió: tire con más suavidad.</translation>
+    </message>
+    <message>
+        <source>The tissue was torn or over-stretched.</source>
+        <translation>El tejido se desgarró o se estiró demasiado.</translation>
+    </message>
+    <message>
+        <source>The needle did not pass through the wall.</source>
+        <translation>La aguja no atravesó la pared.</translation>
+    </message>
+    <message>
+        <source>The stitch was not completed through both ends.</source>
+        <translation>El punto no se completó a través de ambos extremos.</translation>
+    </message>
+    <message>
+        <source>Too few stitches.</source>
+        <translation>Muy pocos puntos.</translation>
+    </message>
+    <message>
+        <source>More stitches than needed.</source>
+        <translation>Más puntos de los necesarios.</translation>
+    </message>
+    <message>
+        <source>Work faster.</source>
+        <translation>Trabaje más rápido.</translation>
+    </message>
+    <message>
+        <source>Handle the tissue more gently: it was over-stretched.</source>
+        <translation>Manipule el tejido con más suavidad: se estiró demasiado.</translation>
+    </message>
+    <message>
+        <source>Space the first three stitches 120° apart.</source>
+        <translation>Separe los tres primeros puntos 120°.</translation>
+    </message>
+    <message>
+        <source>%1: not measured in this attempt.</source>
+        <translation>%1: no medido en este intento.</translation>
+    </message>
+    <message>
+        <source>%1 is too high.</source>
+        <translation>%1 es demasiado alto.</translation>
+    </message>
+    <message>
+        <source>%1 is too low.</source>
+        <translation>%1 es demasiado bajo.</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LatencyDialog</name>
+    <message>
+        <source>Latency</source>
+        <translation>Latencia</translation>
+    </message>
+    <message>
+        <source>Hold the tool and the reference together and move them briskly in every direction for about ten seconds.</source>
+        <translation>Sujete juntos el instrumento y la referencia y muévalos con rapidez en todas las direcciones durante unos diez segundos.</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Grabar</translation>
+    </message>
+    <message>
+        <source>Tracked device:</source>
+        <translation>Dispositivo rastreado:</translation>
+    </message>
+    <message>
+        <source>Reference device:</source>
+        <translation>Dispositivo de referencia:</translation>
+    </message>
+    <message>
+        <source>Stop and estimate</source>
+        <translation>Detener y estimar</translation>
+    </message>
+    <message>
+        <source>Recording…</source>
+        <translation>Grabando…</translation>
+    </message>
+    <message>
+        <source>Latency %1 ms (correlation %2)</source>
+        <translation>Latencia %1 ms (correlación %2)</translation>
+    </message>
+    <message>
+        <source>Too short: record longer.</source>
+        <translation>Demasiado corto: grabe más tiempo.</translation>
+    </message>
+    <message>
+        <source>The devices sent invalid samples.</source>
+        <translation>Los dispositivos enviaron muestras no válidas.</translation>
+    </message>
+    <message>
+        <source>No motion: move the tool.</source>
+        <translation>Sin movimiento: mueva el instrumento.</translation>
+    </message>
+    <message>
+        <source>The motions do not match (correlation %1): move them together.</source>
+        <translation>Los movimientos no coinciden (correlación %1): muévalos juntos.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonListPage</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Learn (guided)</source>
+        <translation>Aprender (guiado)</translation>
+    </message>
+    <message>
+        <source>Test (graded)</source>
+        <translation>Examen (calificado)</translation>
+    </message>
+    <message>
+        <source>Sign out</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>not started</source>
+        <translation>sin empezar</translation>
+    </message>
+    <message>
+        <source>practised</source>
+        <translation>practicada</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>aprobada</translation>
+    </message>
+    <message>
+        <source>proficient</source>
+        <translation>dominada</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lecciones de %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Objetivos&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LiveToolView</name>
+    <message>
+        <source>top (x–y)</source>
+        <translation>arriba (x–y)</translation>
+    </message>
+    <message>
+        <source>side (x–z)</source>
+        <translation>lateral (x–z)</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MainWindow</name>
     <message>
         <source>microsim — micro-anastomosis trainer</source>
         <translation>microsim — entrenador de microanastomosis</translation>
-    </message>
-    <message>
-        <source>Drag to orbit the microscope, wheel to zoom.</source>
-        <translation>Arrastre para girar el microscopio; la rueda acerca y aleja.</translation>
     </message>
     <message>
         <source>History: %1 (schema %2)</source>
@@ -697,26 +1735,6 @@
         <translation>&amp;Configuración</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Predeterminado del sistema</translation>
-    </message>
-    <message>
-        <source>English</source>
-        <translation>Inglés</translation>
-    </message>
-    <message>
-        <source>German</source>
-        <translation>Alemán</translation>
-    </message>
-    <message>
-        <source>Spanish</source>
-        <translation>Español</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -735,6 +1753,1204 @@
     <message>
         <source>&lt;p&gt;&lt;b&gt;microsim %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Practise and assessment of microvascular anastomosis under a virtual operating microscope.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;microsim %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Práctica y evaluación de anastomosis microvasculares bajo un microscopio quirúrgico virtual.&lt;/p&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n lesson file(s) could not be read; the first: %1 (%2)</source>
+        <translation><numerusform>No se pudo leer %n archivo de lección; el primero: %1 (%2)</numerusform><numerusform>No se pudieron leer %n archivos de lección; el primero: %1 (%2)</numerusform></translation>
+    </message>
+    <message>
+        <source>Instructor: %1</source>
+        <translation>Instructor: %1</translation>
+    </message>
+    <message>
+        <source>Trainee: %1</source>
+        <translation>Residente: %1</translation>
+    </message>
+    <message>
+        <source>History unavailable: %1 is read-only; it was left untouched</source>
+        <translation>Historial no disponible: %1 es de solo lectura; no se ha modificado</translation>
+    </message>
+    <message>
+        <source>&amp;Replay a recording into this attempt…</source>
+        <translation>&amp;Reproducir una grabación en este intento…</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Preferencias…</translation>
+    </message>
+    <message>
+        <source>The lesson cannot start</source>
+        <translation>La lección no puede empezar</translation>
+    </message>
+    <message>
+        <source>Start a lesson first; the recording is then replayed into it.</source>
+        <translation>Empiece primero una lección; la grabación se reproducirá en ella.</translation>
+    </message>
+    <message>
+        <source>Replay a recording</source>
+        <translation>Reproducir una grabación</translation>
+    </message>
+    <message>
+        <source>Recordings (*.msrec)</source>
+        <translation>Grabaciones (*.msrec)</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable recording.</source>
+        <translation>%1 no es una grabación legible.</translation>
+    </message>
+    <message>
+        <source>Settings saved; the solver applies from the next attempt.</source>
+        <translation>Ajustes guardados; el resolutor se aplica desde el próximo intento.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MotionScalingDialog</name>
+    <message>
+        <source>Motion scaling</source>
+        <translation>Escalado del movimiento</translation>
+    </message>
+    <message>
+        <source> mm per mm</source>
+        <translation> mm por mm</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Hand motion per scene motion:</source>
+        <translation>Movimiento de la mano por movimiento en la escena:</translation>
+    </message>
+    <message>
+        <source>Fixed scene point (x, y, z):</source>
+        <translation>Punto fijo de la escena (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::PivotWizard</name>
+    <message>
+        <source>Pivot the tool</source>
+        <translation>Pivote el instrumento</translation>
+    </message>
+    <message>
+        <source>Hold the tip still in the divot and tilt the tool in every direction (at least %1°). Poses are collected automatically.</source>
+        <translation>Mantenga la punta quieta en la cavidad e incline el instrumento en todas las direcciones (al menos %1°). Las poses se recogen automáticamente.</translation>
+    </message>
+    <message>
+        <source>Spread %1° — enough</source>
+        <translation>Dispersión %1° — suficiente</translation>
+    </message>
+    <message>
+        <source>Spread %1° — tilt further</source>
+        <translation>Dispersión %1° — incline más</translation>
+    </message>
+    <message>
+        <source>Tip offset</source>
+        <translation>Desplazamiento de la punta</translation>
+    </message>
+    <message>
+        <source>Collect again</source>
+        <translation>Recoger de nuevo</translation>
+    </message>
+    <message>
+        <source>Tip (tool frame): %1, %2, %3 mm
+Pivot (tracker frame): %4, %5, %6 mm
+RMS error %7 mm, largest %8 mm
+%9 poses, spread %10°</source>
+        <translation>Punta (sistema del instrumento): %1, %2, %3 mm
+Pivote (sistema del rastreador): %4, %5, %6 mm
+Error RMS %7 mm, máximo %8 mm
+%9 poses, dispersión %10°</translation>
+    </message>
+    <message>
+        <source>Pivot calibration</source>
+        <translation>Calibración por pivote</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Instrumento</translation>
+    </message>
+    <message>
+        <source>Choose the tracked device of the tool to calibrate.</source>
+        <translation>Elija el dispositivo rastreado del instrumento que desea calibrar.</translation>
+    </message>
+    <message>
+        <source>Left hand</source>
+        <translation>Mano izquierda</translation>
+    </message>
+    <message>
+        <source>Right hand</source>
+        <translation>Mano derecha</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Dispositivo:</translation>
+    </message>
+    <message>
+        <source>Hand:</source>
+        <translation>Mano:</translation>
+    </message>
+    <message>
+        <source>Accepted: the error is within the threshold.</source>
+        <translation>Aceptado: el error está dentro del umbral.</translation>
+    </message>
+    <message>
+        <source>Too few poses: collect again.</source>
+        <translation>Muy pocas poses: recoja de nuevo.</translation>
+    </message>
+    <message>
+        <source>The tracker sent invalid poses: collect again.</source>
+        <translation>El rastreador envió poses no válidas: recoja de nuevo.</translation>
+    </message>
+    <message>
+        <source>The tool was not tilted enough: collect again.</source>
+        <translation>El instrumento no se inclinó lo suficiente: recoja de nuevo.</translation>
+    </message>
+    <message>
+        <source>The error is above the threshold (the tip slipped or the tool bent): collect again.</source>
+        <translation>El error supera el umbral (la punta se deslizó o el instrumento se dobló): recoja de nuevo.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ProfileChooserDialog</name>
+    <message>
+        <source>Setup profile</source>
+        <translation>Perfil de configuración</translation>
+    </message>
+    <message>
+        <source>Use</source>
+        <translation>Usar</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importar…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Import setup profile</source>
+        <translation>Importar perfil de configuración</translation>
+    </message>
+    <message>
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>Export setup profile</source>
+        <translation>Exportar perfil de configuración</translation>
+    </message>
+    <message>
+        <source>%1 — %2 by %3</source>
+        <translation>%1 — %2 por %3</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>desconocido</translation>
+    </message>
+    <message>
+        <source>FRE %1 mm</source>
+        <translation>FRE %1 mm</translation>
+    </message>
+    <message>
+        <source>TRE %1 mm</source>
+        <translation>TRE %1 mm</translation>
+    </message>
+    <message>
+        <source>Cannot read %1.</source>
+        <translation>No se puede leer %1.</translation>
+    </message>
+    <message>
+        <source>The profile could not be stored: %1</source>
+        <translation>No se pudo guardar el perfil: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>No se puede escribir %1.</translation>
+    </message>
+    <message>
+        <source>The file is not a JSON document.</source>
+        <translation>El archivo no es un documento JSON.</translation>
+    </message>
+    <message>
+        <source>The file is not a microsim setup profile (%1).</source>
+        <translation>El archivo no es un perfil de configuración de microsim (%1).</translation>
+    </message>
+    <message>
+        <source>The field "%1" is missing.</source>
+        <translation>Falta el campo «%1».</translation>
+    </message>
+    <message>
+        <source>The field "%1" has the wrong type.</source>
+        <translation>El campo «%1» tiene un tipo incorrecto.</translation>
+    </message>
+    <message>
+        <source>The field "%1" has a value that is not allowed.</source>
+        <translation>El campo «%1» tiene un valor no permitido.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::RegistrationWizard</name>
+    <message>
+        <source>Points</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Type each point's scene position, hold the tip on it and press Touch. Three fiducials at least; check points measure the error elsewhere.</source>
+        <translation>Escriba la posición en la escena de cada punto, mantenga la punta sobre él y pulse «Tocar». Al menos tres fiduciales; los puntos de control miden el error en otro lugar.</translation>
+    </message>
+    <message>
+        <source>Add point</source>
+        <translation>Añadir punto</translation>
+    </message>
+    <message>
+        <source>Touch</source>
+        <translation>Tocar</translation>
+    </message>
+    <message>
+        <source>Registration</source>
+        <translation>Registro</translation>
+    </message>
+    <message>
+        <source>FRE (fit): %1 mm RMS, %2 mm largest</source>
+        <translation>FRE (ajuste): %1 mm RMS, máximo %2 mm</translation>
+    </message>
+    <message numerus="yes">
+        <source>TRE (%n check point(s)): %1 mm RMS, %2 mm largest</source>
+        <translation><numerusform>TRE (%n punto de control): %1 mm RMS, máximo %2 mm</numerusform><numerusform>TRE (%n puntos de control): %1 mm RMS, máximo %2 mm</numerusform></translation>
+    </message>
+    <message>
+        <source>No check points: the TRE is unknown.</source>
+        <translation>Sin puntos de control: el TRE es desconocido.</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Función</translation>
+    </message>
+    <message>
+        <source>Scene x</source>
+        <translation>Escena x</translation>
+    </message>
+    <message>
+        <source>Scene y</source>
+        <translation>Escena y</translation>
+    </message>
+    <message>
+        <source>Scene z</source>
+        <translation>Escena z</translation>
+    </message>
+    <message>
+        <source>Tracker x</source>
+        <translation>Rastreador x</translation>
+    </message>
+    <message>
+        <source>Tracker y</source>
+        <translation>Rastreador y</translation>
+    </message>
+    <message>
+        <source>Tracker z</source>
+        <translation>Rastreador z</translation>
+    </message>
+    <message>
+        <source>Fiducial</source>
+        <translation>Fiducial</translation>
+    </message>
+    <message>
+        <source>Check point</source>
+        <translation>Punto de control</translation>
+    </message>
+    <message>
+        <source>Registered.</source>
+        <translation>Registrado.</translation>
+    </message>
+    <message>
+        <source>Touch at least three fiducials.</source>
+        <translation>Toque al menos tres fiduciales.</translation>
+    </message>
+    <message>
+        <source>Every point needs both positions.</source>
+        <translation>Cada punto necesita ambas posiciones.</translation>
+    </message>
+    <message>
+        <source>A position is not a number.</source>
+        <translation>Una posición no es un número.</translation>
+    </message>
+    <message>
+        <source>The fiducials lie on one line: spread them out.</source>
+        <translation>Los fiduciales están en una línea: sepárelos.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ResultsPage</name>
+    <message>
+        <source>Metric</source>
+        <translation>Métrica</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Advice</source>
+        <translation>Consejo</translation>
+    </message>
+    <message>
+        <source>Retry</source>
+        <translation>Reintentar</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Volver a las lecciones</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Pierce angles&lt;/b&gt; (0° = perpendicular; red entry, blue exit)</source>
+        <translation>&lt;b&gt;Ángulos de punción&lt;/b&gt; (0° = perpendicular; rojo entrada, azul salida)</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Examen</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Aprendizaje</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;%1 — %2&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;%1 — %2&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='font-size:28pt'&gt;–&lt;/span&gt;</source>
+        <translation>&lt;span style='font-size:28pt'&gt;–&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Not scored</source>
+        <translation>Sin calificar</translation>
+    </message>
+    <message>
+        <source>&lt;span style='font-size:28pt'&gt;&lt;b&gt;%1&lt;/b&gt; / 100&lt;/span&gt;</source>
+        <translation>&lt;span style='font-size:28pt'&gt;&lt;b&gt;%1&lt;/b&gt; / 100&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#1b7f3a; font-size:16pt'&gt;Passed&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#1b7f3a; font-size:16pt'&gt;Aprobado&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style='color:#b00020; font-size:16pt'&gt;Not passed yet&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#b00020; font-size:16pt'&gt;Aún no aprobado&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Scored from an incomplete recording.</source>
+        <translation>Calificado a partir de una grabación incompleta.</translation>
+    </message>
+    <message>
+        <source>%1 (target %2)</source>
+        <translation>%1 (objetivo %2)</translation>
+    </message>
+    <message>
+        <source>Good.</source>
+        <translation>Bien.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewCharts</name>
+    <message>
+        <source>Score over attempts</source>
+        <translation>Puntuación por intento</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Intento</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Puntuación</translation>
+    </message>
+    <message>
+        <source>Pass mark</source>
+        <translation>Nota de aprobado</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewPage</name>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Exportar CSV…</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Actualizar</translation>
+    </message>
+    <message>
+        <source>Sign out</source>
+        <translation>Cerrar sesión</translation>
+    </message>
+    <message>
+        <source>Group:</source>
+        <translation>Grupo:</translation>
+    </message>
+    <message>
+        <source>Best score (attempts). ✓ passed, ★ proficient: the pass mark on two consecutive Test attempts. Double-click a cell for the history.</source>
+        <translation>Mejor puntuación (intentos). ✓ aprobado, ★ competente: la nota de aprobado en dos intentos de examen consecutivos. Doble clic en una celda para ver el historial.</translation>
+    </message>
+    <message>
+        <source>PDF report…</source>
+        <translation>Informe PDF…</translation>
+    </message>
+    <message>
+        <source>Trainee:</source>
+        <translation>Residente:</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lección:</translation>
+    </message>
+    <message>
+        <source>Overview</source>
+        <translation>Resumen</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Intento</translation>
+    </message>
+    <message>
+        <source>The history could not be read.</source>
+        <translation>No se pudo leer el historial.</translation>
+    </message>
+    <message>
+        <source>Instructor: %1</source>
+        <translation>Instructor: %1</translation>
+    </message>
+    <message>
+        <source>Trainee: %1</source>
+        <translation>Residente: %1</translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation>Todos los grupos</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Residente</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Grupo</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n attempt(s), %1 finished</source>
+        <translation><numerusform>%n intento, %1 terminados</numerusform><numerusform>%n intentos, %1 terminados</numerusform></translation>
+    </message>
+    <message>
+        <source>That attempt could not be read.</source>
+        <translation>No se pudo leer ese intento.</translation>
+    </message>
+    <message>
+        <source>Only instructors can add notes.</source>
+        <translation>Solo los instructores pueden añadir notas.</translation>
+    </message>
+    <message>
+        <source>The note could not be stored.</source>
+        <translation>No se pudo guardar la nota.</translation>
+    </message>
+    <message>
+        <source>Note added.</source>
+        <translation>Nota añadida.</translation>
+    </message>
+    <message>
+        <source>Export attempts as CSV</source>
+        <translation>Exportar intentos como CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported the attempts to %1.</source>
+        <translation>Intentos exportados a %1.</translation>
+    </message>
+    <message>
+        <source>Choose a trainee first.</source>
+        <translation>Elija primero un residente.</translation>
+    </message>
+    <message>
+        <source>Save the report as PDF</source>
+        <translation>Guardar el informe como PDF</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Archivos PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Saved the report to %1.</source>
+        <translation>Informe guardado en %1.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewReport</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>You may not export these attempts.</source>
+        <translation>No tiene permiso para exportar estos intentos.</translation>
+    </message>
+    <message>
+        <source>The export failed: %1</source>
+        <translation>La exportación falló: %1</translation>
+    </message>
+    <message>
+        <source>Training report: %1</source>
+        <translation>Informe de formación: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>No se puede escribir %1.</translation>
+    </message>
+    <message>
+        <source>Group: %1</source>
+        <translation>Grupo: %1</translation>
+    </message>
+    <message>
+        <source>Printed %1</source>
+        <translation>Impreso el %1</translation>
+    </message>
+    <message>
+        <source>Attempts</source>
+        <translation>Intentos</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Started</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Puntuación</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Aprobado</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>No attempts yet.</source>
+        <translation>Aún no hay intentos.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReviewText</name>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Recorrido</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Recorrido, mano izquierda</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Recorrido, mano derecha</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Movimientos</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Suavidad</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Tiempo inactivo</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Reagarres</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Roturas del hilo</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Mayor estiramiento del tejido</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Daño tisular</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Pasos por la pared</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Ángulo de entrada</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ángulo de salida</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Distancia al borde</translation>
+    </message>
+    <message>
+        <source>Bite (wall thicknesses)</source>
+        <translation>Distancia al borde (grosores de pared)</translation>
+    </message>
+    <message>
+        <source>Full-thickness passages</source>
+        <translation>Pasos de espesor completo</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Pared posterior atrapada</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Bite asymmetry</source>
+        <translation>Asimetría de los pasos</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Separación de los puntos</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Error de triangulación</translation>
+    </message>
+    <message>
+        <source>Took longer than the target time.</source>
+        <translation>Tardó más que el tiempo objetivo.</translation>
+    </message>
+    <message>
+        <source>The instruments travelled further than needed.</source>
+        <translation>Los instrumentos recorrieron más de lo necesario.</translation>
+    </message>
+    <message>
+        <source>Movements were jerky; aim for smooth, continuous motion.</source>
+        <translation>Los movimientos fueron bruscos; busque un movimiento suave y continuo.</translation>
+    </message>
+    <message>
+        <source>Long pauses with both hands still.</source>
+        <translation>Pausas largas con ambas manos quietas.</translation>
+    </message>
+    <message>
+        <source>The tissue was stretched too far.</source>
+        <translation>El tejido se estiró demasiado.</translation>
+    </message>
+    <message>
+        <source>Too many re-grasps.</source>
+        <translation>Demasiados reagarres.</translation>
+    </message>
+    <message>
+        <source>The wall was not passed with the needle.</source>
+        <translation>La aguja no atravesó la pared.</translation>
+    </message>
+    <message>
+        <source>The needle entered too obliquely; enter perpendicular to the wall.</source>
+        <translation>La aguja entró demasiado oblicua; entre perpendicular a la pared.</translation>
+    </message>
+    <message>
+        <source>The needle came out too obliquely; follow its curve.</source>
+        <translation>La aguja salió demasiado oblicua; siga su curvatura.</translation>
+    </message>
+    <message>
+        <source>Bites too far from the edge.</source>
+        <translation>Pasos demasiado lejos del borde.</translation>
+    </message>
+    <message>
+        <source>Bites too close to the edge.</source>
+        <translation>Pasos demasiado cerca del borde.</translation>
+    </message>
+    <message>
+        <source>Some passages did not go through the whole wall.</source>
+        <translation>Algunos pasos no atravesaron toda la pared.</translation>
+    </message>
+    <message>
+        <source>The two bites of a stitch differ in length.</source>
+        <translation>Los dos pasos de un punto tienen longitudes distintas.</translation>
+    </message>
+    <message>
+        <source>Not all stitches were completed.</source>
+        <translation>No se completaron todos los puntos.</translation>
+    </message>
+    <message>
+        <source>Too few stitches.</source>
+        <translation>Muy pocos puntos.</translation>
+    </message>
+    <message>
+        <source>More stitches than needed.</source>
+        <translation>Más puntos de los necesarios.</translation>
+    </message>
+    <message>
+        <source>The first stitches are not spaced 120° apart.</source>
+        <translation>Los primeros puntos no están separados 120°.</translation>
+    </message>
+    <message>
+        <source>The back wall was caught: the lumen would be closed.</source>
+        <translation>Se atrapó la pared posterior: la luz quedaría cerrada.</translation>
+    </message>
+    <message>
+        <source>The suture broke.</source>
+        <translation>El hilo se rompió.</translation>
+    </message>
+    <message>
+        <source>The tissue was torn or over-stretched.</source>
+        <translation>El tejido se desgarró o se estiró en exceso.</translation>
+    </message>
+    <message>
+        <source>%1: not measured in this attempt.</source>
+        <translation>%1: no medido en este intento.</translation>
+    </message>
+    <message>
+        <source>%1 too high.</source>
+        <translation>%1 demasiado alto.</translation>
+    </message>
+    <message>
+        <source>%1 too low.</source>
+        <translation>%1 demasiado bajo.</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>Examen</translation>
+    </message>
+    <message>
+        <source>Learn</source>
+        <translation>Aprendizaje</translation>
+    </message>
+    <message>
+        <source>In progress</source>
+        <translation>En curso</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Terminado</translation>
+    </message>
+    <message>
+        <source>Interrupted</source>
+        <translation>Interrumpido</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Tiempo (s)</translation>
+    </message>
+    <message>
+        <source>Entry angle (°)</source>
+        <translation>Ángulo de entrada (°)</translation>
+    </message>
+    <message>
+        <source>Exit angle (°)</source>
+        <translation>Ángulo de salida (°)</translation>
+    </message>
+    <message>
+        <source>Bite (mm)</source>
+        <translation>Distancia al borde (mm)</translation>
+    </message>
+    <message>
+        <source>Bite (walls)</source>
+        <translation>Distancia al borde (paredes)</translation>
+    </message>
+    <message>
+        <source>Position (°)</source>
+        <translation>Posición (°)</translation>
+    </message>
+    <message>
+        <source>Full thickness</source>
+        <translation>Espesor completo</translation>
+    </message>
+    <message>
+        <source>Back wall</source>
+        <translation>Pared posterior</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::SignInPage</name>
+    <message>
+        <source>&lt;h2&gt;Who is practising?&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;¿Quién practica?&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Trainee</source>
+        <translation>Residente</translation>
+    </message>
+    <message>
+        <source>Sign in</source>
+        <translation>Entrar</translation>
+    </message>
+    <message>
+        <source>Your name</source>
+        <translation>Su nombre</translation>
+    </message>
+    <message>
+        <source>Create and sign in</source>
+        <translation>Crear y entrar</translation>
+    </message>
+    <message>
+        <source>New trainee:</source>
+        <translation>Nuevo residente:</translation>
+    </message>
+    <message>
+        <source>Instructor</source>
+        <translation>Instructor</translation>
+    </message>
+    <message>
+        <source>Sign in as instructor</source>
+        <translation>Entrar como instructor</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>The history is unavailable: you can practise, but nothing will be stored.</source>
+        <translation>El historial no está disponible: puede practicar, pero no se guardará nada.</translation>
+    </message>
+    <message>
+        <source>Guest</source>
+        <translation>Invitado</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Escriba primero un nombre.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists; pick them from the list.</source>
+        <translation>Ya existe una persona llamada %1; elíjala en la lista.</translation>
+    </message>
+    <message>
+        <source>The trainee could not be created (%1).</source>
+        <translation>No se pudo crear el residente (%1).</translation>
+    </message>
+    <message>
+        <source>Instructors need the history to sign in.</source>
+        <translation>Los instructores necesitan el historial para entrar.</translation>
+    </message>
+    <message>
+        <source>Unknown instructor or wrong password.</source>
+        <translation>Instructor desconocido o contraseña incorrecta.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::TrackerStatusWidget</name>
+    <message>
+        <source>Tracker connected</source>
+        <translation>Rastreador conectado</translation>
+    </message>
+    <message>
+        <source>Tracker not connected</source>
+        <translation>Rastreador no conectado</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n dropped</source>
+        <translation><numerusform>%n descartado</numerusform><numerusform>%n descartados</numerusform></translation>
+    </message>
+    <message>
+        <source>No tracker</source>
+        <translation>Sin rastreador</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::TraineeHistoryView</name>
+    <message>
+        <source>Attempt</source>
+        <translation>Intento</translation>
+    </message>
+    <message>
+        <source>Finished</source>
+        <translation>Terminado</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Puntuación</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Aprobado</translation>
+    </message>
+    <message>
+        <source>No finished attempts in this lesson yet.</source>
+        <translation>Aún no hay intentos terminados en esta lección.</translation>
+    </message>
+    <message>
+        <source>%1 — not measured in this lesson</source>
+        <translation>%1 — no se mide en esta lección</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::Viewport</name>
+    <message>
+        <source>F1: keys</source>
+        <translation>F1: teclas</translation>
+    </message>
+    <message>
+        <source>Left hand active</source>
+        <translation>Mano izquierda activa</translation>
+    </message>
+    <message>
+        <source>Right hand active</source>
+        <translation>Mano derecha activa</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::settings::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Ajustes</translation>
+    </message>
+    <message>
+        <source>Scene default</source>
+        <translation>Valor de la escena</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start.</source>
+        <translation>Se aplica en el próximo inicio.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::settings::Tunables</name>
+    <message>
+        <source>As the lesson's scene says</source>
+        <translation>Según la escena de la lección</translation>
+    </message>
+    <message>
+        <source>Quasi-static (the paper's)</source>
+        <translation>Cuasiestático (el del artículo)</translation>
+    </message>
+    <message>
+        <source>Newton with multigrid</source>
+        <translation>Newton con multimalla</translation>
+    </message>
+    <message>
+        <source>Implicit Euler</source>
+        <translation>Euler implícito</translation>
+    </message>
+    <message>
+        <source>Tissue solver</source>
+        <translation>Resolutor del tejido</translation>
+    </message>
+    <message>
+        <source>The tissue solver of live attempts; graded replays use the same one.</source>
+        <translation>El resolutor del tejido en los intentos en vivo; las reproducciones calificadas usan el mismo.</translation>
+    </message>
+    <message>
+        <source>Iteration budget</source>
+        <translation>Presupuesto de iteraciones</translation>
+    </message>
+    <message>
+        <source>Solver iterations per step; 0 keeps the scene's.</source>
+        <translation>Iteraciones del resolutor por paso; 0 mantiene las de la escena.</translation>
+    </message>
+    <message>
+        <source>Mono</source>
+        <translation>Mono</translation>
+    </message>
+    <message>
+        <source>Quad-buffer stereo</source>
+        <translation>Estéreo de cuádruple búfer</translation>
+    </message>
+    <message>
+        <source>Anaglyph (red/cyan)</source>
+        <translation>Anaglifo (rojo/cian)</translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation>Lado a lado</translation>
+    </message>
+    <message>
+        <source>Stereo</source>
+        <translation>Estéreo</translation>
+    </message>
+    <message>
+        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
+        <translation>El cuádruple búfer pasa a anaglifo donde la pantalla no lo admite.</translation>
+    </message>
+    <message>
+        <source>QWERTY / QWERTZ (W A S D, Q E)</source>
+        <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
+    </message>
+    <message>
+        <source>AZERTY (Z Q S D, A E)</source>
+        <translation>AZERTY (Z Q S D, A E)</translation>
+    </message>
+    <message>
+        <source>Key map</source>
+        <translation>Asignación de teclas</translation>
+    </message>
+    <message>
+        <source>Which letter keys move the tools; the arrows and Space stay the same.</source>
+        <translation>Qué letras mueven los instrumentos; las flechas y la barra espaciadora no cambian.</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>Milímetros</translation>
+    </message>
+    <message>
+        <source>Micrometres</source>
+        <translation>Micrómetros</translation>
+    </message>
+    <message>
+        <source>Length units</source>
+        <translation>Unidad de longitud</translation>
+    </message>
+    <message>
+        <source>Units of lengths on the results page.</source>
+        <translation>Unidad de las longitudes en la página de resultados.</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Predeterminado del sistema</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>Inglés</translation>
+    </message>
+    <message>
+        <source>German</source>
+        <translation>Alemán</translation>
+    </message>
+    <message>
+        <source>Spanish</source>
+        <translation>Español</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>The interface language.</source>
+        <translation>El idioma de la interfaz.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::tracking::ManualSource</name>
+    <message>
+        <source>Tab — switch hand</source>
+        <translation>Tab — cambiar de mano</translation>
+    </message>
+    <message>
+        <source>A / D — move left / right</source>
+        <translation>A / D — mover a la izquierda / derecha</translation>
+    </message>
+    <message>
+        <source>W / S — move up / down</source>
+        <translation>W / S — mover arriba / abajo</translation>
+    </message>
+    <message>
+        <source>Q / E — move away / toward you</source>
+        <translation>Q / E — alejar / acercar</translation>
+    </message>
+    <message>
+        <source>← / → — turn the tool</source>
+        <translation>← / → — girar el instrumento</translation>
+    </message>
+    <message>
+        <source>↑ / ↓ — tilt the tool</source>
+        <translation>↑ / ↓ — inclinar el instrumento</translation>
+    </message>
+    <message>
+        <source>Space (hold) — close the jaws</source>
+        <translation>Espacio (mantener) — cerrar las mordazas</translation>
+    </message>
+    <message>
+        <source>Shift — fine steps</source>
+        <translation>Mayús — pasos finos</translation>
+    </message>
+    <message>
+        <source>R — reset the tools</source>
+        <translation>R — reiniciar los instrumentos</translation>
+    </message>
+    <message>
+        <source>Right drag — move the tool in the view plane</source>
+        <translation>Arrastrar con el botón derecho — mover el instrumento en el plano de la vista</translation>
+    </message>
+    <message>
+        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
+        <translation>Arrastrar con el izquierdo — orbitar; con el central o Mayús — desplazar; rueda — zoom; Ctrl+rueda — enfocar</translation>
+    </message>
+    <message>
+        <source>F1 — show or hide this help</source>
+        <translation>F1 — mostrar u ocultar esta ayuda</translation>
     </message>
 </context>
 </TS>
