@@ -233,7 +233,7 @@ std::variant<SetupProfile, ProfileJsonError> importProfileJson(const QByteArray&
 std::optional<qint64> SetupProfileStore::save(const SetupProfile& profile) {
   QSqlDatabase db = db_.connection();
   const QString now = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
-  const auto optional = [](const std::optional<double>& v) { return v ? QVariant(*v) : QVariant(); };
+  const auto optional = [](const std::optional<double>& v) { return v ? QVariant(*v) : QVariant(QMetaType::fromType<double>()); };
 
   // update the profile of that name, or insert it; then read its id back (portable)
   QSqlQuery q(db);
@@ -241,8 +241,10 @@ std::optional<qint64> SetupProfileStore::save(const SetupProfile& profile) {
       "UPDATE setup_profiles SET calibrated_by = ?, calibrated_at = ?, fre_mm = ?, tre_mm = ?, document = ?, "
       "updated_at = ? WHERE name = ?"));
   const QString document = QString::fromUtf8(exportProfileJson(profile));
+  // an empty, not a null, string: a null QString binds as SQL NULL
+  const QString by = profile.calibratedBy.isNull() ? QStringLiteral("") : profile.calibratedBy;
   const QString at = profile.calibratedAt.toUTC().toString(Qt::ISODateWithMs);
-  for (const QVariant& v : {QVariant(profile.calibratedBy), QVariant(at), optional(profile.freMm),
+  for (const QVariant& v : {QVariant(by), QVariant(at), optional(profile.freMm),
                             optional(profile.treMm), QVariant(document), QVariant(now), QVariant(profile.name)})
     q.addBindValue(v);
   if (!q.exec()) {
@@ -253,7 +255,7 @@ std::optional<qint64> SetupProfileStore::save(const SetupProfile& profile) {
     q.prepare(QStringLiteral(
         "INSERT INTO setup_profiles (name, calibrated_by, calibrated_at, fre_mm, tre_mm, document, updated_at) "
         "VALUES (?, ?, ?, ?, ?, ?, ?)"));
-    for (const QVariant& v : {QVariant(profile.name), QVariant(profile.calibratedBy), QVariant(at),
+    for (const QVariant& v : {QVariant(profile.name), QVariant(by), QVariant(at),
                               optional(profile.freMm), optional(profile.treMm), QVariant(document), QVariant(now)})
       q.addBindValue(v);
     if (!q.exec()) {

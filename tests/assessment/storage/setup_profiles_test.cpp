@@ -83,6 +83,22 @@ TEST(SetupProfiles, SaveListLoadReplaceRemoveOnARealFile) {
   EXPECT_EQ(store.list().size(), 1);
 }
 
+TEST(SetupProfiles, AProfileWithoutErrorsOrCalibratorIsStored) {
+  QTemporaryDir dir;
+  HistoryDatabase db;
+  ASSERT_TRUE(db.open(dir.filePath(QStringLiteral("history.sqlite"))).ok());
+  SetupProfileStore store(db);
+  SetupProfile p;
+  p.name = QStringLiteral("Fresh");
+  p.calibratedAt = QDateTime(QDate(2026, 1, 2), QTime(3, 4, 5), Qt::UTC);
+  const std::optional<qint64> id = store.save(p);
+  ASSERT_TRUE(id) << store.lastError().toStdString();
+  const std::optional<SetupProfile> back = store.load(*id);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(back->sameContent(p));
+  EXPECT_FALSE(store.list().front().freMm);
+}
+
 TEST(SetupProfiles, JsonRoundTripKeepsEveryBit) {
   const SetupProfile p = sampleProfile(QStringLiteral("Bench 1"));
   const auto back = importProfileJson(exportProfileJson(p));
