@@ -4,7 +4,9 @@
 // pivot input:
 //   {"poses": [[16 numbers: the tool → tracker 4 by 4 matrix, row-major, mm], ...],
 //    "min_poses": 8, "min_spread_deg": 15, "max_rms_mm": 0.5}      (thresholds optional)
-//   (the "last" arrays of `microsim-cli track --json` have this form)
+//   (the "last" arrays of `microsim-cli track --json` have this form), or a tracker stream
+//   as `microsim-cli track --record` writes it (tracking/pose_stream.h): the poses of the
+//   device named by --device (needed when the stream holds several)
 // pivot output:
 //   {"status": "ok", "tip_offset": [x, y, z] (tool frame, mm), "pivot": [x, y, z] (tracker
 //    frame, mm), "rms_mm", "max_mm", "spread_deg", "poses"}
@@ -23,6 +25,7 @@
 
 #include "calibration/pivot_calibration.h"
 #include "calibration/registration.h"
+#include "tracking/pose_stream.h"
 
 #include <QCommandLineParser>
 #include <QFile>
@@ -30,6 +33,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <set>
 #include <vector>
 
 namespace microsim::cli {
@@ -93,8 +97,36 @@ bool readPairs(const QJsonArray& pairs, Eigen::Matrix3Xd& tracker, Eigen::Matrix
   return true;
 }
 
-QJsonObject runPivot(const QJsonObject& in, int& exitCode, QString& error) {
+// the poses of one device of a recorded tracker stream
+bool streamPoses(const QJsonObject& in, const QString& device, std::vector<Eigen::Isometry3d>& poses, QString& error) {
+  tracking::PoseStream stream;
+  const tracking::PoseStreamStatus status = tracking::decodePoseStream(QJsonDocument(in).toJson(), stream);
+  if (!status.ok()) {
+    error = status.error == tracking::PoseStreamError::BadSample
+                ? Cli::tr("sample %1 of the tracker stream: bad \"%2\"").arg(status.sample).arg(status.field)
+                : Cli::tr("not a tracker stream this version reads");
+    return false;
+  }
+  std::set<std::string> devices;
+  for (const tracking::StreamSample& s : stream.samples)
+    if (const auto* p = std::get_if<tracking::RawPose>(&s)) devices.insert(p->device);
+  std::string chosen = device.toStdString();
+  if (chosen.empty() && devices.size() == 1) chosen = *devices.begin();
+  if (!devices.contains(chosen)) {
+    QStringList names;
+    for (const std::string& d : devices) names << QString::fromStdString(d);
+    error = Cli::tr("choose the device with --device (the stream holds: %1)").arg(names.join(QStringLiteral(", ")));
+    return false;
+  }
+  for (const tracking::StreamSample& s : stream.samples)
+    if (const auto* p = std::get_if<tracking::RawPose>(&s); p != nullptr && p->device == chosen && p->hasRotation)
+      poses.emplace_back(p->matrix);
+  return true;
+}
+
+QJsonObject runPivot(const QJsonObject& in, const QString& device, int& exitCode, QString& error) {
   std::vector<Eigen::Isometry3d> poses;
+  if (in.contains(QStringLiteral("samples")) && !streamPoses(in, device, poses, error)) return {};
   for (const QJsonValue& v : in.value(QStringLiteral("poses")).toArray()) {
     const QJsonArray a = v.toArray();
     if (a.size() != 16) {
@@ -152,15 +184,17 @@ int runCalibrate(const QStringList& args, Streams& io) {
   const QCommandLineOption input(QStringLiteral("input"), Cli::tr("Read the poses or points from the JSON <file>."),
                                  QStringLiteral("file"));
   const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the result as JSON to <file>."), QStringLiteral("file"));
+  const QCommandLineOption device(QStringLiteral("device"), Cli::tr("pivot on a tracker stream: the device to calibrate."),
+                                  QStringLiteral("name"));
   const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({input, json, help});
+  parser.addOptions({input, json, device, help});
   parser.addPositionalArgument(QStringLiteral("kind"), Cli::tr("pivot or register"));
   if (!parser.parse(QStringList{QStringLiteral("calibrate")} + args)) {
     io.err << "microsim-cli calibrate: " << parser.errorText() << '\n';
     return kExitUsage;
   }
   if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli calibrate pivot|register --input FILE [--json FILE]") << "\n\n"
+    io.out << Cli::tr("Usage: microsim-cli calibrate pivot|register --input FILE [--device NAME] [--json FILE]") << "\n\n"
            << parser.helpText().section(QLatin1Char('\n'), 2);
     return kExitOk;
   }
@@ -189,7 +223,7 @@ int runCalibrate(const QStringList& args, Streams& io) {
   int exitCode = kExitFailure;
   QString error;
   const QJsonObject result =
-      kind == QLatin1String("pivot") ? runPivot(doc.object(), exitCode, error) : runRegister(doc.object(), exitCode, error);
+      kind == QLatin1String("pivot") ? runPivot(doc.object(), parser.value(device), exitCode, error) : runRegister(doc.object(), exitCode, error);
   if (!error.isEmpty()) {
     io.err << "microsim-cli calibrate: " << error << '\n';
     return kExitFailure;

@@ -1,7 +1,9 @@
-// `microsim-cli track --igtl HOST:PORT [--duration S] [--json OUT] [--once] [--max-speed MM_S]`:
-// connects to an OpenIGTLink server, records what arrives for S seconds (or, with --once,
-// until the server closes the link), and reports per device the accepted poses, the last
-// one and the rate, and the refused messages by reason.
+// `microsim-cli track --igtl HOST:PORT [--duration S] [--json OUT] [--record FILE] [--once]
+// [--max-speed MM_S]`: connects to an OpenIGTLink server, records what arrives for S
+// seconds (or, with --once, until the server closes the link), and reports per device the
+// accepted poses, the last one and the rate, and the refused messages by reason. --record
+// writes every accepted pose and channel value, in arrival order, as a tracker stream
+// (tracking/pose_stream.h) that ReplaySource and `calibrate pivot` read.
 //
 // JSON:
 //   {"host": "127.0.0.1", "port": 18944, "connections": 1,
@@ -13,6 +15,7 @@
 #include "cli/commands.h"
 
 #include "tracking/igtl_client.h"
+#include "tracking/pose_stream.h"
 
 #include <QCommandLineParser>
 #include <QEventLoop>
@@ -64,17 +67,20 @@ int runTrack(const QStringList& args, Streams& io) {
   const QCommandLineOption duration(QStringLiteral("duration"), Cli::tr("Record for <seconds> (default 10)."),
                                     QStringLiteral("seconds"), QStringLiteral("10"));
   const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the record as JSON to <file>."), QStringLiteral("file"));
+  const QCommandLineOption record(QStringLiteral("record"),
+                                  Cli::tr("Write every accepted pose and channel value as a tracker stream to <file>."),
+                                  QStringLiteral("file"));
   const QCommandLineOption once(QStringLiteral("once"), Cli::tr("Stop when the server closes the link (no reconnection)."));
   const QCommandLineOption maxSpeed(QStringLiteral("max-speed"), Cli::tr("Refuse poses moving faster than <mm/s> (default 2000)."),
                                     QStringLiteral("mm/s"), QStringLiteral("2000"));
   const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({igtl, duration, json, once, maxSpeed, help});
+  parser.addOptions({igtl, duration, json, record, once, maxSpeed, help});
   if (!parser.parse(QStringList{QStringLiteral("track")} + args)) {
     io.err << "microsim-cli track: " << parser.errorText() << '\n';
     return kExitUsage;
   }
   if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--once] [--max-speed MM_S]")
+    io.out << Cli::tr("Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]")
            << "\n\n"
            << parser.helpText().section(QLatin1Char('\n'), 2);
     return kExitOk;
@@ -98,17 +104,20 @@ int runTrack(const QStringList& args, Streams& io) {
   // record every accepted pose and channel value on this thread
   std::map<std::string, DeviceRecord> devices;
   std::map<std::string, ChannelRecord> channels;
+  tracking::PoseStream stream;
   QObject receiver;
   QEventLoop loop;
   tracking::IgtlClient client(config);
-  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&devices](const RawPose& pose) {
+  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&devices, &stream](const RawPose& pose) {
+    stream.samples.emplace_back(pose);
     DeviceRecord& d = devices[pose.device];
     if (d.received == 0) d.firstTime = pose.time;
     ++d.received;
     d.last = pose.matrix;
     d.lastTime = pose.time;
   });
-  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&channels](const ChannelValue& v) {
+  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&channels, &stream](const ChannelValue& v) {
+    stream.samples.emplace_back(v);
     ChannelRecord& c = channels[v.channel];
     ++c.received;
     c.last = v.value;
@@ -148,6 +157,11 @@ int runTrack(const QStringList& args, Streams& io) {
     const auto reason = static_cast<tracking::Rejection>(r);
     if (status.rejected[reason] > 0)
       io.out << "  " << QString::fromLatin1(tracking::rejectionKey(reason)).leftJustified(18) << status.rejected[reason] << '\n';
+  }
+
+  if (parser.isSet(record) && !tracking::writePoseStream(parser.value(record), stream).ok()) {
+    io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(record)) << '\n';
+    return kExitFailure;
   }
 
   // the JSON
