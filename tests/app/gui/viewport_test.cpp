@@ -1,0 +1,233 @@
+#include "gui/viewport.h"
+
+#include "gui/simulation_runner.h"
+#include "tracking/manual_source.h"
+
+#include <QImage>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <optional>
+
+namespace microsim::gui {
+namespace {
+
+const QString kScene = QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
+
+bool reddish(QRgb c) { return qRed(c) > qGreen(c) + 50 && qRed(c) > 90; }
+bool drape(QRgb c) { return qGreen(c) > qRed(c) + 10 && qBlue(c) > qRed(c) + 10; }
+bool threadBlue(QRgb c) { return qBlue(c) > qRed(c) + 50 && qBlue(c) > qGreen(c) + 30; }
+bool guideGreen(QRgb c) { return qGreen(c) > qRed(c) + 80 && qGreen(c) > qBlue(c) + 50; }
+
+// a viewport at 800 × 600 on a loaded (not running) anastomosis scene
+struct Fixture {
+  SimulationRunner runner;
+  std::unique_ptr<Viewport> view;
+
+  Fixture() {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    EXPECT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
+    view = std::make_unique<Viewport>();
+    view->resize(800, 600);
+    view->setRunner(&runner);
+  }
+
+  QImage draw() {
+    QSignalSpy frames(view.get(), &Viewport::frameDrawn);
+    if (!view->isVisible()) {
+      view->show();
+      EXPECT_TRUE(QTest::qWaitForWindowExposed(view.get()));
+    } else {
+      view->update();
+    }
+    EXPECT_TRUE(frames.count() > 0 || frames.wait(10000));
+    EXPECT_TRUE(view->lastError().isEmpty()) << view->lastError().toStdString();
+    return view->grabFramebuffer();
+  }
+
+  // where a scene point lands on the image (pixels), through the centre eye
+  std::optional<QPoint> project(const Eigen::Vector3d& p, const QImage& image, Eye eye = Eye::Centre,
+                                int x0 = 0, int width = -1) const {
+    const int w = width < 0 ? image.width() : width;
+    const QMatrix4x4 m = view->camera().projection(static_cast<float>(w) / static_cast<float>(image.height()), eye) *
+                         view->camera().view(eye);
+    const QVector4D clip = m * QVector4D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()), 1.0f);
+    if (clip.w() <= 0.0f) return std::nullopt;
+    const QPoint px(x0 + qRound((clip.x() / clip.w() + 1.0f) * 0.5f * static_cast<float>(w)),
+                    qRound((1.0f - clip.y() / clip.w()) * 0.5f * static_cast<float>(image.height())));
+    if (px.x() < 2 || px.y() < 2 || px.x() >= x0 + w - 2 || px.y() >= image.height() - 2) return std::nullopt;
+    return px;
+  }
+};
+
+bool anyNear(const QImage& image, QPoint at, int radius, bool (*test)(QRgb)) {
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const QPoint p = at + QPoint(dx, dy);
+      if (image.valid(p) && test(image.pixel(p))) return true;
+    }
+  return false;
+}
+
+TEST(Viewport, ShowsTheVesselWhereItProjectsAndTheBackgroundElsewhere) {
+  Fixture f;
+  const QImage image = f.draw();
+  ASSERT_FALSE(image.isNull());
+  EXPECT_GE(f.view->drawnStep(), 0);
+  // the top of each vessel end, seen from the microscope (the ends span |x| in [0.25, 3.25])
+  const Eigen::Vector3d toEye = (f.runner.sceneDef()->camera.eye - f.runner.sceneDef()->camera.target).normalized();
+  for (double x : {-2.0, -1.0, 1.0, 2.0}) {
+    const auto p = f.project(Eigen::Vector3d(x, 0.0, 0.0) + 0.5 * toEye, image);
+    ASSERT_TRUE(p) << x;
+    EXPECT_TRUE(reddish(image.pixel(*p))) << "x = " << x << ": " << std::hex << image.pixel(*p);
+  }
+  // beside the vessel and in the gap between its ends: the background plane
+  for (const Eigen::Vector3d& q : {Eigen::Vector3d(0.0, 2.5, 0.0), Eigen::Vector3d(-2.0, -2.0, 0.0),
+                                   Eigen::Vector3d(0.0, 0.0, 0.0)}) {
+    const auto p = f.project(q, image);
+    ASSERT_TRUE(p);
+    EXPECT_TRUE(drape(image.pixel(*p))) << q.transpose() << ": " << std::hex << image.pixel(*p);
+  }
+}
+
+TEST(Viewport, DrawsTheSutureAsATubeWhereTheSnapshotHasIt) {
+  Fixture f;
+  const QImage image = f.draw();
+  const auto s = f.runner.latestSnapshot();
+  ASSERT_TRUE(s);
+  const int nodes = static_cast<int>(s->suturePositions.size() / 3);
+  ASSERT_GT(nodes, s->needleNodes + 10);
+  int visible = 0;
+  int found = 0;
+  for (int i = s->needleNodes + 2; i < nodes; i += 3) {
+    const auto k = static_cast<std::size_t>(3 * i);
+    const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
+    if (!p) continue;
+    ++visible;
+    if (anyNear(image, *p, 2, threadBlue)) ++found;
+  }
+  ASSERT_GE(visible, 3);
+  EXPECT_GE(found, visible * 8 / 10) << found << " of " << visible;
+  // and nowhere far from it: the image's blue pixels are few
+  int blue = 0;
+  for (int y = 0; y < image.height(); y += 2)
+    for (int x = 0; x < image.width(); x += 2) blue += threadBlue(image.pixel(x, y)) ? 1 : 0;
+  EXPECT_LT(blue, image.width() * image.height() / 4 / 20);
+}
+
+TEST(Viewport, AnaglyphPutsTheLeftEyeInRedAndTheRightEyeInCyan) {
+  Fixture f;
+  // a near focal plane: the vessel lies far behind it, so the two eyes see it well apart
+  f.view->camera().setFocusDistance(f.view->camera().distance() * 0.5f);
+  f.view->cameraChanged();
+  const QImage mono = f.draw();
+  f.view->setStereoMode(StereoMode::Anaglyph);
+  EXPECT_EQ(f.view->effectiveStereoMode(), StereoMode::Anaglyph);
+  const QImage ana = f.draw();
+  int redOnly = 0;   // the left eye sees vessel where the centre eye sees none
+  int cyanOnly = 0;  // the right eye sees dark vessel green where the centre eye sees the drape
+  for (int y = 0; y < ana.height(); y += 2) {
+    for (int x = 0; x < ana.width(); x += 2) {
+      const QRgb m = mono.pixel(x, y);
+      const QRgb a = ana.pixel(x, y);
+      if (!reddish(m) && qRed(a) > qRed(m) + 80 && qGreen(a) < qGreen(m) + 20) ++redOnly;
+      if (!reddish(m) && qRed(a) < qRed(m) + 20 && qGreen(a) + 60 < qGreen(m)) ++cyanOnly;
+    }
+  }
+  EXPECT_GT(redOnly, 50) << redOnly;
+  EXPECT_GT(cyanOnly, 50) << cyanOnly;
+  // the right eye alone is in green and blue: they do not equal the mono image's everywhere
+  int greenDiffers = 0;
+  for (int y = 0; y < ana.height(); y += 2)
+    for (int x = 0; x < ana.width(); x += 2) greenDiffers += std::abs(qGreen(ana.pixel(x, y)) - qGreen(mono.pixel(x, y))) > 30;
+  EXPECT_GT(greenDiffers, 100);
+
+  // no stereo buffers here: quad-buffer falls back to anaglyph
+  f.view->setStereoMode(StereoMode::QuadBuffer);
+  if (!f.view->quadBufferAvailable()) EXPECT_EQ(f.view->effectiveStereoMode(), StereoMode::Anaglyph);
+}
+
+TEST(Viewport, SideBySideDrawsOneEyeInEachHalf) {
+  Fixture f;
+  f.view->setStereoMode(StereoMode::SideBySide);
+  const QImage image = f.draw();
+  const int half = image.width() / 2;
+  const Eigen::Vector3d toEye = (f.runner.sceneDef()->camera.eye - f.runner.sceneDef()->camera.target).normalized();
+  for (double x : {-2.0, 2.0}) {
+    const Eigen::Vector3d top = Eigen::Vector3d(x, 0.0, 0.0) + 0.5 * toEye;
+    const auto left = f.project(top, image, Eye::Left, 0, half);
+    const auto right = f.project(top, image, Eye::Right, half, image.width() - half);
+    ASSERT_TRUE(left && right);
+    EXPECT_TRUE(reddish(image.pixel(*left))) << std::hex << image.pixel(*left);
+    EXPECT_TRUE(reddish(image.pixel(*right))) << std::hex << image.pixel(*right);
+    EXPECT_NEAR(left->x() + half, right->x(), 0.05 * half);
+  }
+  // the centre column of each half crosses the vessel's gap, the seam between them does not
+  // show the vessel's middle: each half is its own picture
+  EXPECT_TRUE(drape(image.pixel(half / 2, image.height() / 2)) || !reddish(image.pixel(half / 2, image.height() / 2)));
+}
+
+TEST(Viewport, DrawsGuidesAsRingsAndArrows) {
+  Fixture f;
+  Guide ring;
+  ring.kind = Guide::Kind::Target;
+  ring.point = Eigen::Vector3d(0.0, 2.0, 0.5);
+  ring.direction = Eigen::Vector3d::UnitZ();
+  ring.size = 0.3;
+  Guide arrow;
+  arrow.kind = Guide::Kind::NeedleDirection;
+  arrow.point = Eigen::Vector3d(-2.0, -2.0, 0.5);
+  arrow.direction = Eigen::Vector3d::UnitX();
+  arrow.size = 1.0;
+  f.view->setGuides({ring, arrow});
+  const QImage image = f.draw();
+  const auto onRing = f.project(ring.point + Eigen::Vector3d(0.3, 0.0, 0.0), image);
+  const auto centre = f.project(ring.point, image);
+  const auto shaft = f.project(arrow.point + Eigen::Vector3d(0.4, 0.0, 0.0), image);
+  ASSERT_TRUE(onRing && centre && shaft);
+  EXPECT_TRUE(anyNear(image, *onRing, 2, guideGreen));
+  EXPECT_FALSE(guideGreen(image.pixel(*centre)));  // a ring, not a disc
+  EXPECT_TRUE(anyNear(image, *shaft, 2, guideGreen));
+  f.view->setGuides({});
+  const QImage cleared = f.draw();
+  EXPECT_FALSE(anyNear(cleared, *onRing, 2, guideGreen));
+}
+
+TEST(Viewport, KeysDriveTheManualSourceAndF1ShowsTheHelp) {
+  Fixture f;
+  tracking::ManualSource source;
+  f.view->setManualSource(&source);
+  QSignalSpy frames(&source, &tracking::TrackerSource::frameReady);
+  QObject::connect(&source, &tracking::TrackerSource::frameReady, &f.runner, &SimulationRunner::submitFrame);
+  source.start();
+  f.draw();
+  f.view->setFocus();
+  const Eigen::Vector3d p0 = source.current().hand(sim::Hand::Right).position;
+  const Eigen::Vector3d right(f.view->camera().right().x(), f.view->camera().right().y(), f.view->camera().right().z());
+  QTest::keyClick(f.view.get(), Qt::Key_D);
+  QTest::keyClick(f.view.get(), Qt::Key_D);
+  QTest::keyClick(f.view.get(), Qt::Key_A, Qt::ShiftModifier);
+  const Eigen::Vector3d moved = source.current().hand(sim::Hand::Right).position;
+  EXPECT_LT((moved - p0 - (2 * tracking::ManualSource::kStepMm - tracking::ManualSource::kFineStepMm) * right).norm(), 1e-6);
+  EXPECT_EQ(frames.last().at(0).value<sim::InputFrame>().hand(sim::Hand::Right).position, moved);
+  QTest::keyClick(f.view.get(), Qt::Key_Tab);
+  EXPECT_EQ(source.activeHand(), sim::Hand::Left);
+
+  EXPECT_FALSE(f.view->helpVisible());
+  const QImage before = f.draw();
+  QTest::keyClick(f.view.get(), Qt::Key_F1);
+  EXPECT_TRUE(f.view->helpVisible());
+  const QImage help = f.draw();
+  EXPECT_NE(before, help);
+}
+
+}  // namespace
+}  // namespace microsim::gui
