@@ -30,7 +30,9 @@ struct LessonFile {
   }
 };
 
-QByteArray valid(const QByteArray& steps = R"([{"instruction": {"en": "Grab"}, "success": {"grab": {"min_nodes": 2}}}])",
+const QByteArray kSteps = R"([{"instruction": {"en": "Grab"}, "success": {"grab": {"min_nodes": 2}}}])";
+
+QByteArray valid(const QByteArray& steps = kSteps,
                  const QByteArray& extra = {}) {
   return R"({"id": "t_1", "version": 2, "title": {"en": "T", "de": "T-de"}, "goals": [{"en": "G"}],
              "scene": "../scene.json", "rubric": "../rubric.json", "steps": )" + steps + extra + "}";
@@ -47,7 +49,7 @@ LessonError errorOf(const QByteArray& json) {
 }
 
 TEST(Lesson, LoadsAValidFile) {
-  LessonFile f(valid({}, R"(, "guides": [{"target": [1, 2, 3], "direction": [0, 0, 2]}])"));
+  LessonFile f(valid(kSteps, R"(, "guides": [{"target": [1, 2, 3], "direction": [0, 0, 2]}])"));
   const auto result = loadLesson(f.path);
   ASSERT_TRUE(std::holds_alternative<Lesson>(result));
   const Lesson& l = std::get<Lesson>(result);
@@ -106,7 +108,7 @@ TEST(Lesson, NamesTheFieldOfEveryMalformedValue) {
   const std::vector<BadCase> cases = {
       {"[1, 2]", LessonErrorKind::WrongType, ""},
       {R"({"version": 1})", LessonErrorKind::Missing, "id"},
-      {valid({}, R"(, "colour": 1)"), LessonErrorKind::UnknownField, "colour"},
+      {valid(kSteps, R"(, "colour": 1)"), LessonErrorKind::UnknownField, "colour"},
       {valid(R"({"a": 1})"), LessonErrorKind::WrongType, "steps"},
       {valid("[]"), LessonErrorKind::BadValue, "steps"},
       {valid(R"([{"instruction": {"en": "x"}}])"), LessonErrorKind::Missing, "steps[0].success"},
@@ -127,9 +129,9 @@ TEST(Lesson, NamesTheFieldOfEveryMalformedValue) {
        "steps[0].success.stretch_mm"},
       {valid(R"([{"instruction": {"en": "x"}, "success": {"target": {"index": 3, "tolerance_mm": 0.1}}}])"),
        LessonErrorKind::BadValue, "steps[0].success.target.index"},
-      {valid({}, R"(, "guides": [{"target": [1, 2], "direction": [0, 0, 1]}])"), LessonErrorKind::WrongType,
+      {valid(kSteps, R"(, "guides": [{"target": [1, 2], "direction": [0, 0, 1]}])"), LessonErrorKind::WrongType,
        "guides[0].target"},
-      {valid({}, R"(, "guides": [{"target": [1, 2, 3], "direction": [0, 0, 0]}])"), LessonErrorKind::BadValue,
+      {valid(kSteps, R"(, "guides": [{"target": [1, 2, 3], "direction": [0, 0, 0]}])"), LessonErrorKind::BadValue,
        "guides[0].direction"},
   };
   for (const BadCase& c : cases) {

@@ -74,7 +74,7 @@ TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
     int doneBeforeEnd = 0;
     for (std::size_t i = 0; i < recording.frames.size(); ++i) {
       scene.step(recording.frames[i]);
-      if (i + 1 == recording.frames.size() / 4)
+      if (i + 1 == 90)  // 0.9 s, before the first pierce at 1.02 s
         doneBeforeEnd = stepsDone(lesson, collectFacts(scene.events(), scene.pierces(), 0.0));
     }
     const AttemptFacts facts = collectFacts(scene.events(), scene.pierces(), 0.0);
