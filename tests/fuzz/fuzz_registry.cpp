@@ -10,6 +10,9 @@ std::span<const Target> targets() {
       Target{"spring-scene", &fuzzSpringScene},
       Target{"recording", &fuzzRecording},
       Target{"igtl", &fuzzIgtlStream},
+      Target{"rubric", &fuzzRubric},
+      Target{"setup-profile", &fuzzSetupProfile},
+      Target{"lesson", &fuzzLesson},
   };
   return kTargets;
 }

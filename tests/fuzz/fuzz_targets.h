@@ -30,6 +30,9 @@ int fuzzSceneFile(const std::uint8_t* data, std::size_t size);
 int fuzzSpringScene(const std::uint8_t* data, std::size_t size);
 int fuzzRecording(const std::uint8_t* data, std::size_t size);
 int fuzzIgtlStream(const std::uint8_t* data, std::size_t size);
+int fuzzRubric(const std::uint8_t* data, std::size_t size);
+int fuzzSetupProfile(const std::uint8_t* data, std::size_t size);
+int fuzzLesson(const std::uint8_t* data, std::size_t size);
 
 /// Stops the process with a message when a promised property does not hold (a finding).
 [[noreturn]] void propertyBroken(const char* target, const char* what);
