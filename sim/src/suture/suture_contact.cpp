@@ -302,11 +302,23 @@ void SelfContact::collect(const Points& x, const Points& xStart, double radius, 
   blocks_.update(x, &xStart, radius);
   const int blockCount = blocks_.count();
   linkBoxes_.resize(static_cast<std::size_t>(links_));
+  linkSpheres_.resize(static_cast<std::size_t>(links_));
   for (int l = 0; l < links_; ++l) {
     const Vec3 lo = x.col(l).cwiseMin(x.col(l + 1)).cwiseMin(xStart.col(l)).cwiseMin(xStart.col(l + 1));
     const Vec3 hi = x.col(l).cwiseMax(x.col(l + 1)).cwiseMax(xStart.col(l)).cwiseMax(xStart.col(l + 1));
     linkBoxes_[static_cast<std::size_t>(l)] = {lo.array() - radius, hi.array() + radius};
+    // every point of the link over the substep (nodes moving linearly from xStart) lies within
+    // half its length plus its nodes' larger motion of its midpoint now
+    const double moved = std::sqrt(std::max((x.col(l) - xStart.col(l)).squaredNorm(),
+                                            (x.col(l + 1) - xStart.col(l + 1)).squaredNorm()));
+    Sphere& sphere = linkSpheres_[static_cast<std::size_t>(l)];
+    sphere.centre = 0.5 * (x.col(l) + x.col(l + 1));
+    sphere.radius = 0.5 * (x.col(l + 1) - x.col(l)).norm() + moved + radius;
   }
+  const auto touches = [](const Sphere& p, const Sphere& q) {
+    const double reach = p.radius + q.radius;
+    return (p.centre - q.centre).squaredNorm() < reach * reach;
+  };
   const auto overlap = [](const collide::Aabb& p, const collide::Aabb& q) {
     return (p.lo.array() <= q.hi.array()).all() && (q.lo.array() <= p.hi.array()).all();
   };
@@ -323,7 +335,8 @@ void SelfContact::collect(const Points& x, const Points& xStart, double radius, 
   const auto testLinks = [&](int i0, int i1, int j0, int j1) {
     for (int i = i0; i < i1; ++i)
       for (int j = std::max(j0, i + skip); j < j1; ++j)
-        if (overlap(linkBoxes_[static_cast<std::size_t>(i)], linkBoxes_[static_cast<std::size_t>(j)]))
+        if (overlap(linkBoxes_[static_cast<std::size_t>(i)], linkBoxes_[static_cast<std::size_t>(j)]) &&
+            touches(linkSpheres_[static_cast<std::size_t>(i)], linkSpheres_[static_cast<std::size_t>(j)]))
           pairs_.push_back({i, j});
   };
 
@@ -345,7 +358,8 @@ void SelfContact::collect(const Points& x, const Points& xStart, double radius, 
 
 int SelfContact::project(Points& x, const Points& xStart, double radius, double friction, int skip,
                          std::span<const std::uint8_t> movable,
-                         const std::vector<std::uint8_t>& alive) {
+                         const std::vector<std::uint8_t>& alive,
+                         std::vector<std::uint8_t>* touched) {
   if (links_ == 0) return 0;
   const double gap = 2.0 * radius;
   collect(x, xStart, radius, skip, alive);
@@ -403,6 +417,8 @@ int SelfContact::project(Points& x, const Points& xStart, double radius, double 
         if (movable[static_cast<std::size_t>(node[k])])
           x.col(node[k]) -= share[k] / denom * cancel;
     }
+    if (touched)
+      for (int n : node) (*touched)[static_cast<std::size_t>(n)] = 1;
     ++count;
   }
   return count;

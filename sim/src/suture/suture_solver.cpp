@@ -82,11 +82,8 @@ class DirectSolver final : public SutureSolver {
     // after a round that did not converge (a fold the projection cannot undo), the paper's
     // two averaged passes re-lay the spans between leaders
     withContacts(leaders, x, contact, all_);
-    if (round > 0 && !converged_) {
-      followTheLeader(model, x, alive, all_);
-    } else {
-      followOutward(model, x, alive, all_);
-    }
+    const bool relaid = round > 0 && !converged_;
+    if (relaid) followTheLeader(model, x, alive, all_);
 
     // weights: thread nodes 1, leaders 0, contact nodes scaled down
     const double unit = model.inverseMass(model.nodeCount() - 1);
@@ -95,9 +92,20 @@ class DirectSolver final : public SutureSolver {
       w_[static_cast<std::size_t>(i)] =
           model.inverseMass(i) / unit * (contact[static_cast<std::size_t>(i)] ? params.contactWeight : 1.0);
     for (const Leader& l : leaders) w_[static_cast<std::size_t>(l.node)] = 0.0;
-    const ChainProjectionResult r = projectChainLengths(
+    // the projection alone first: its mass-weighted corrections add no energy, whereas
+    // follow-the-leader outward of the last leader moves each node entirely onto its already
+    // placed neighbour and, carried on as Verlet velocity, whips a free tail until it explodes
+    // (a 2000-link tail reached 70 mm per substep within ten 10 ms frames). Follow-the-leader
+    // outward stays the fallback predictor for a jump the projection cannot take from where the
+    // chain is.
+    ChainProjectionResult r = projectChainLengths(
         x, model.restLengths(), w_, alive, params.projectionIterations, params.projectionTolerance,
         scratch_);
+    if (r.residual > params.projectionTolerance && !relaid) {
+      followOutward(model, x, alive, all_);
+      r = projectChainLengths(x, model.restLengths(), w_, alive, params.projectionIterations,
+                              params.projectionTolerance, scratch_);
+    }
     converged_ = r.residual <= params.projectionTolerance;
     return converged_;
   }
@@ -164,6 +172,8 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
   movable_.resize(static_cast<std::size_t>(nodes));
   movableSurface_.resize(static_cast<std::size_t>(nodes));
   contact_.resize(static_cast<std::size_t>(nodes));
+  selfTouched_.resize(static_cast<std::size_t>(nodes));
+  free_.resize(static_cast<std::size_t>(nodes));
   current_.assign(grips.begin(), grips.end());
   const int substeps = substepCount(model, state, grips, params);
   report.substeps = substeps;
@@ -237,9 +247,15 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
         report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius,
                                                       muNow, movableSurface_, exemptions_, contact_,
                                                       &blocks_);
+      std::fill(selfTouched_.begin(), selfTouched_.end(), std::uint8_t{0});
       report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, muNow, selfSkip,
-                                                            movable_, state.alive)
+                                                            movable_, state.alive, &selfTouched_)
                                             : 0;
+
+      // the bending limit on thread nodes nothing holds or touches
+      for (std::size_t k = 0; k < free_.size(); ++k)
+        free_[k] = movableSurface_[k] && !contact_[k] && !selfTouched_[k];
+      limitBending(state.x, model.restLengths(), state.alive, free_, params.maxTurn);
 
       // lengths, then the rigid needle
       const bool restored =

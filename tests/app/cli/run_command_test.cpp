@@ -20,7 +20,7 @@ const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
 const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
 const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
 // tests/sim/scene/stitch_test.cpp holds the same value
-const QString kGolden = QStringLiteral("796f273405b4e638");
+const QString kGolden = QStringLiteral("3b9962f2cdf9ab3a");
 
 QJsonObject readJson(const QString& path) {
   QFile f(path);

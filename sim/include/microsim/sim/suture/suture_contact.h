@@ -117,7 +117,9 @@ int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface
 /// Self-contact of the chain with itself, culled by straightness.
 ///
 /// Broad phase: the links in blocks of ChainBlocks::kNodes, a box per block (swept over the
-/// substep, as are the links' boxes). A run of links
+/// substep, as are the links' boxes, and a bounding sphere per link: its midpoint now, half
+/// its length plus its nodes' larger motion since xStart, so it holds the link over the whole
+/// substep; a pair must meet in both). A run of links
 /// whose every link advances along the run's chord d by at least m, (x_{k+1} − x_k)·d ≥ m > 0,
 /// cannot touch itself: for links i < j, every point of j lies at least (j − i − 1)·m further
 /// along d than every point of i, so pairs at least `skip` links apart are (skip − 1)·m ≥ 2r
@@ -128,9 +130,11 @@ class SelfContact {
   SelfContact() = default;
   explicit SelfContact(int linkCount);
   /// Keeps intact links at least 2·radius apart (pairs fewer than `skip` links apart along
-  /// the chain are ignored), with friction μ on their relative tangential motion.
+  /// the chain are ignored), with friction μ on their relative tangential motion. Marks the
+  /// nodes of corrected pairs in `touched` when given (#nodes entries).
   int project(Points& x, const Points& xStart, double radius, double friction, int skip,
-              std::span<const std::uint8_t> movable, const std::vector<std::uint8_t>& alive);
+              std::span<const std::uint8_t> movable, const std::vector<std::uint8_t>& alive,
+              std::vector<std::uint8_t>* touched = nullptr);
   int linkCount() const { return links_; }
 
  private:
@@ -140,7 +144,12 @@ class SelfContact {
 
   int links_ = 0;
   ChainBlocks blocks_;
+  struct Sphere {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0.0;
+  };
   std::vector<collide::Aabb> linkBoxes_;
+  std::vector<Sphere> linkSpheres_;  // per link: every point of it over the substep, grown by r
   std::vector<std::uint8_t> straight_;  // per block, then per neighbouring pair
   std::vector<std::array<int, 2>> pairs_;
 };

@@ -15,8 +15,8 @@
 //      needle node), active pierces at their points; the solver may carry the chain with
 //      them first (direct: carrySpans, chain_projection.h);
 //   3. up to `iterations` rounds of: contacts (capsules, surface, self; contact nodes become
-//      soft leaders, the paper's drape constraints) → restore link lengths (the solver) →
-//      rigid needle; a round whose contacts corrected nothing and whose lengths were restored
+//      soft leaders, the paper's drape constraints) → the bending limit on free thread nodes
+//      (bending_limit.h) → restore link lengths (the solver) → rigid needle; a round whose contacts corrected nothing and whose lengths were restored
 //      ends the loop (the next would restore the same lengths again);
 //   4. a last frictionless contact pass (the substep ends outside every obstacle), and the
 //      lengths it disturbed restored with its nodes nearly held (finalContactWeight);
@@ -28,16 +28,19 @@
 // Solvers (makeSutureSolver):
 //   "ftl"    — the paper, faithful: follow-the-leader from every leader, the two passes
 //              averaged between leaders (follow_the_leader.h). Stretches between leaders.
-//   "direct" — spans carried with their leaders (carrySpans) and follow-the-leader outward
-//              of the outermost leaders as the predictor, then exact lengths by the
+//   "direct" — spans carried with their leaders (carrySpans), then exact lengths by the
 //              tridiagonal Gauss–Newton projection (chain_projection.h), O(N) per sweep: no
-//              stretch wherever the constraints allow it. (Averaging the two passes, the
+//              stretch wherever the constraints allow it. Follow-the-leader outward of the
+//              outermost leaders is only the fallback predictor when the projection does not
+//              converge from the predicted chain: as the first predictor it whips a free tail
+//              (its one-sided corrections, kept as Verlet velocity, add energy). (Averaging the two passes, the
 //              paper's rule, is a poor predictor for a long span: its junction links can
 //              start several times their length, and the projection then needs its damped
 //              steps.)
 //
 // Units: millimetres, seconds, grams.
 
+#include "microsim/sim/suture/bending_limit.h"
 #include "microsim/sim/suture/chain_projection.h"
 #include "microsim/sim/suture/follow_the_leader.h"
 #include "microsim/sim/suture/suture_constraints.h"
@@ -69,6 +72,7 @@ struct SutureStepParams {
   double projectionTolerance = 1e-10; ///< direct: relative length residual to stop at
   double contactWeight = 0.25;        ///< direct: inverse-mass scale of nodes in contact
   double finalContactWeight = 0.02;   ///< direct: the same in the restore after the last contact pass
+  double maxTurn = kDefaultMaxTurn;   ///< rad: sharpest turn between free links (bending_limit.h); ≥ π: off
 };
 
 enum class SutureStepStatus : std::uint8_t {
@@ -119,7 +123,7 @@ class SutureSolver {
   std::vector<Leader> leaders_;
   std::vector<Vec3> gripFrom_;
   std::vector<Grip> current_;
-  std::vector<std::uint8_t> movable_, movableSurface_, contact_;
+  std::vector<std::uint8_t> movable_, movableSurface_, contact_, selfTouched_, free_;
   std::vector<ContactExemption> exemptions_;
 };
 
