@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace microsim::sim::suture {
 
@@ -70,7 +71,20 @@ class FollowTheLeaderSolver final : public SutureSolver {
   std::vector<Leader> all_;
 };
 
-// follow-the-leader as predictor, exact lengths by the tridiagonal projection
+// true when a piece of the chain has an end beyond its outermost leaders (leaders sorted)
+bool hasFreeEnd(const std::vector<std::uint8_t>& alive, std::span<const Leader> leaders) {
+  for (const Piece& piece : chainPieces(alive)) {
+    const auto first = std::find_if(leaders.begin(), leaders.end(),
+                                    [&](const Leader& l) { return l.node >= piece.first; });
+    if (first == leaders.end() || first->node != piece.first) return true;
+    const auto last = std::find_if(first, leaders.end(),
+                                   [&](const Leader& l) { return l.node > piece.last; });
+    if (std::prev(last)->node != piece.last) return true;
+  }
+  return false;
+}
+
+// exact lengths by the tridiagonal projection, follow-the-leader outward as fallback predictor
 class DirectSolver final : public SutureSolver {
  public:
   std::string_view name() const override { return "direct"; }
@@ -101,7 +115,7 @@ class DirectSolver final : public SutureSolver {
     ChainProjectionResult r = projectChainLengths(
         x, model.restLengths(), w_, alive, params.projectionIterations, params.projectionTolerance,
         scratch_);
-    if (r.residual > params.projectionTolerance && !relaid) {
+    if (r.residual > params.projectionTolerance && !relaid && hasFreeEnd(alive, all_)) {
       followOutward(model, x, alive, all_);
       r = projectChainLengths(x, model.restLengths(), w_, alive, params.projectionIterations,
                               params.projectionTolerance, scratch_);
