@@ -1,9 +1,11 @@
 #include "gui/main_window.h"
 
 #include "gui/app_settings.h"
+#include "gui/calibration/calibration_menu.h"
 #include "gui/pages/lesson_list_page.h"
 #include "gui/pages/results_page.h"
 #include "gui/pages/sign_in_page.h"
+#include "gui/review/review_page.h"
 #include "gui/settings/settings_dialog.h"
 #include "gui/settings/tunables.h"
 #include "gui/simulation_runner.h"
@@ -54,16 +56,14 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
     userName_ = name;
     userLabel_->setText(viewer.role == assessment::Role::Instructor ? tr("Instructor: %1").arg(name)
                                                                      : tr("Trainee: %1").arg(name));
-    showLessons();
+    if (viewer.role == assessment::Role::Instructor && history_ && history_->isOpen()) {
+      showReview();
+    } else {
+      showLessons();
+    }
   });
   connect(lessonList_, &LessonListPage::startLesson, this, &MainWindow::startLesson);
-  connect(lessonList_, &LessonListPage::signOut, this, [this] {
-    viewer_ = {};
-    userName_.clear();
-    userLabel_->clear();
-    signIn_->refresh();
-    pages_->setCurrentWidget(signIn_);
-  });
+  connect(lessonList_, &LessonListPage::signOut, this, &MainWindow::signOut);
   connect(attempt_, &AttemptPage::finished, this, &MainWindow::showResults);
   connect(attempt_, &AttemptPage::abandoned, this, &MainWindow::showLessons);
   connect(results_, &ResultsPage::retry, this, [this] { startLesson(lastLesson_, lastMode_); });
@@ -71,12 +71,41 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
 
   buildMenus();
 
+  // trackers: the calibration menu, the tracker status line, and the frames of a calibrated
+  // tracker into the running attempt (the keyboard and mouse drive it otherwise)
+  calibration_ = addCalibrationMenu(this, history_);
+  connect(calibration_, &CalibrationSession::sceneFrameReady, this, [this](const sim::InputFrame& frame) {
+    if (SimulationRunner* runner = attempt_->runner()) runner->submitFrame(frame);
+  });
+
   QSettings settings;
   restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());
   restoreState(settings.value(settings::windowState()).toByteArray());
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::showReview() {
+  // an instructor's review is built for the viewer who signed in and dropped at sign-out
+  if (review_) review_->deleteLater();
+  review_ = new ReviewPage(*history_, viewer_, pages_);
+  pages_->addWidget(review_);
+  connect(review_, &ReviewPage::signOutRequested, this, &MainWindow::signOut);
+  pages_->setCurrentWidget(review_);
+}
+
+void MainWindow::signOut() {
+  viewer_ = {};
+  userName_.clear();
+  userLabel_->clear();
+  if (review_) {
+    pages_->removeWidget(review_);
+    review_->deleteLater();
+    review_ = nullptr;
+  }
+  signIn_->refresh();
+  pages_->setCurrentWidget(signIn_);
+}
 
 Viewport* MainWindow::viewport() const { return attempt_->viewport(); }
 QWidget* MainWindow::currentPage() const { return pages_->currentWidget(); }

@@ -22,7 +22,9 @@ class QStackedWidget;
 
 namespace microsim::gui {
 
+class CalibrationSession;
 class LessonListPage;
+class ReviewPage;
 class ResultsPage;
 class SignInPage;
 class Viewport;
@@ -42,6 +44,9 @@ class MainWindow : public QMainWindow {
   LessonListPage* lessonListPage() const { return lessonList_; }
   AttemptPage* attemptPage() const { return attempt_; }
   ResultsPage* resultsPage() const { return results_; }
+  /// The instructor's review, while an instructor is signed in; null otherwise.
+  ReviewPage* reviewPage() const { return review_; }
+  CalibrationSession* calibration() const { return calibration_; }
   QWidget* currentPage() const;
   const std::vector<lesson::Lesson>& lessons() const { return lessons_; }
   /// The status bar's text about the history database.
@@ -66,7 +71,12 @@ class MainWindow : public QMainWindow {
   void showAbout();
   QString language() const;
 
+  void showReview();
+  void signOut();
+
   assessment::HistoryDatabase* history_;
+  ReviewPage* review_ = nullptr;
+  CalibrationSession* calibration_ = nullptr;
   QStackedWidget* pages_ = nullptr;
   SignInPage* signIn_ = nullptr;
   LessonListPage* lessonList_ = nullptr;

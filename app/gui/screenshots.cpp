@@ -4,6 +4,7 @@
 #include "gui/pages/lesson_list_page.h"
 #include "gui/pages/results_page.h"
 #include "gui/pages/sign_in_page.h"
+#include "gui/review/review_screenshots.h"
 #include "gui/settings/settings_dialog.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
@@ -104,6 +105,11 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   if (!save(dialog, out.filePath(QStringLiteral("settings.png")), written)) return fail(QStringLiteral("settings"));
   dialog.close();
   window.close();
+
+  // the instructor's review, on demo data of its own
+  const QStringList review = writeReviewScreenshots(directory);
+  if (review.isEmpty()) return fail(QStringLiteral("review"));
+  written += review;
   return written;
 }
 

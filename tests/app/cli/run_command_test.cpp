@@ -1,6 +1,7 @@
 // `microsim-cli run` as a user runs it: the shipped stitch replays to the golden hash with its
 // four pierces; a recording made with --record replays to the same hash; damaged recordings
 // and broken scenes fail with a message naming the file, and no crash.
+#include "support/golden_stitch.h"
 #include "support/cli_runner.h"
 
 #include <QFile>
@@ -20,7 +21,7 @@ const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
 const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
 const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
 // tests/sim/scene/stitch_test.cpp holds the same value
-const QString kGolden = QStringLiteral("3b9962f2cdf9ab3a");
+const QString kGolden = QString::fromLatin1(microsim::testing::kGoldenStitchHashText);
 
 QJsonObject readJson(const QString& path) {
   QFile f(path);

@@ -1,3 +1,4 @@
+#include "support/golden_stitch.h"
 #include "gui/simulation_runner.h"
 
 #include "microsim/sim/scene/recording.h"
@@ -18,7 +19,7 @@ const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
 const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
 const std::string kStitch = std::string(MICROSIM_SOURCE_DIR) + "/resources/recordings/stitch.msrec";
 // the golden hash of stitch.msrec on anastomosis.json (tests/sim/scene/stitch_test.cpp)
-constexpr std::uint64_t kGoldenStitchHash = 0x796f273405b4e638ULL;
+using microsim::testing::kGoldenStitchHash;
 
 std::vector<sim::InputFrame> stitchFrames() {
   sim::Recording rec;

@@ -1,6 +1,7 @@
 // A scripted needle pass through both ends of a severed vessel: four pierces at the known
 // points and angles, the same bits on every run, and the shipped recording in step with the
 // script (and with its golden hash).
+#include "support/golden_stitch.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/stitch_script.h"
@@ -25,10 +26,8 @@ SceneDef anastomosis() {
   return std::get<SceneDef>(std::move(load));
 }
 
-// the golden hash of resources/recordings/stitch.msrec replayed on anastomosis.json; it
-// changes, on purpose, when a solver's arithmetic changes (update it then, with the reason
-// in the commit message); it must never change between runs or build types
-constexpr std::uint64_t kGoldenStitchHash = 0x3b9962f2cdf9ab3aULL;
+// the golden hash (tests/support/golden_stitch.h says when it may change)
+using microsim::testing::kGoldenStitchHash;
 
 std::uint64_t replay(Scene& scene, const Recording& rec) {
   for (const InputFrame& f : rec.frames) scene.step(f);
