@@ -78,7 +78,7 @@ std::optional<qint64> idByName(QSqlDatabase db, const QString& name) {
 // inserts a person (and their group when new) inside the caller's transaction
 std::optional<qint64> insertPerson(QSqlDatabase db, const QString& name, Role role,
                                    const QString& group, QString* error) {
-  QVariant groupId(QMetaType(QMetaType::LongLong));
+  QVariant groupId{QMetaType(QMetaType::LongLong)};  // braces: clang reads parentheses as a function declaration
   QSqlQuery q(db);
   if (!group.isEmpty()) {
     q.prepare(QStringLiteral("SELECT id FROM trainee_groups WHERE name = ?"));
