@@ -1,5 +1,6 @@
 #pragma once
 // Runs the real microsim-cli binary (MICROSIM_CLI_PATH) as a user would, for tests.
+#include <QByteArray>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QString>
@@ -13,7 +14,8 @@ struct CliRun {
   QString err;
 };
 
-inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
+/// Runs microsim-cli with `args`; `input`, when given, is written to its stdin (then closed).
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QByteArray& input = {}) {
   QProcess p;
   // English messages whatever the machine's locale, so tests can match them
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -22,6 +24,11 @@ inline CliRun runCli(const QStringList& args, int timeoutMs = 120000) {
   p.setProcessEnvironment(env);
   p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
   CliRun r;
+  if (!input.isEmpty()) {
+    if (!p.waitForStarted()) return r;
+    p.write(input);
+  }
+  p.closeWriteChannel();
   if (!p.waitForFinished(timeoutMs)) {
     p.kill();
     p.waitForFinished();

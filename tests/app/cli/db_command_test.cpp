@@ -9,7 +9,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -22,25 +21,7 @@ using microsim::testing::runCli;
 
 // runCli with `input` written to the program's stdin
 CliRun runCliWithInput(const QStringList& args, const QByteArray& input) {
-  QProcess p;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
-  env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
-  p.setProcessEnvironment(env);
-  p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
-  CliRun r;
-  if (!p.waitForStarted()) return r;
-  p.write(input);
-  p.closeWriteChannel();
-  if (!p.waitForFinished(120000)) {
-    p.kill();
-    p.waitForFinished();
-    return r;
-  }
-  r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-  r.out = QString::fromUtf8(p.readAllStandardOutput());
-  r.err = QString::fromUtf8(p.readAllStandardError());
-  return r;
+  return runCli(args, 120000, input);
 }
 
 QByteArray readAll(const QString& path) {
