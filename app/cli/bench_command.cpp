@@ -2,6 +2,7 @@
 // benchmarks in tests/bench, prints its rows (ours beside the paper's and the peer's),
 // and writes the JSON rows and a PNG of its curves when asked.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #ifdef MICROSIM_HAVE_BENCHMARKS
 #include "bench_report.h"
@@ -64,10 +65,9 @@ int runBench(const QStringList& args, Streams& io) {
   io.out << QString::fromStdString(table.str());
 
   if (parser.isSet(json)) {
-    QFile file(parser.value(json));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QByteArray::fromStdString(bench::toJson(report.rows))) < 0) {
-      io.err << Cli::tr("microsim-cli bench: cannot write %1: %2").arg(file.fileName(), file.errorString()) << '\n';
+    QString why;
+    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(bench::toJson(report.rows)), why)) {
+      io.err << Cli::tr("microsim-cli bench: cannot write %1: %2").arg(parser.value(json), why) << '\n';
       return kExitFailure;
     }
   }

@@ -22,6 +22,7 @@
 //
 // Exit code 0 when the status is "ok", 1 otherwise (the JSON is still written), 2 on usage.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "calibration/pivot_calibration.h"
 #include "calibration/registration.h"
@@ -246,8 +247,8 @@ int runCalibrate(const QStringList& args, Streams& io) {
   }
 
   if (parser.isSet(json)) {
-    QFile out(parser.value(json));
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate) || out.write(QJsonDocument(result).toJson()) < 0) {
+    QString why;
+    if (!writeOutputFile(parser.value(json), QJsonDocument(result).toJson(), why)) {
       io.err << Cli::tr("microsim-cli calibrate: cannot write %1").arg(parser.value(json)) << '\n';
       return kExitFailure;
     }

@@ -9,6 +9,7 @@
 // --db defaults to the desktop app's file; a postgresql://user@host:port/db URL selects
 // a department server. Exit code 0 on success, 1 when the database refused, 2 on usage.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "microsim/assessment/storage/history_database.h"
 
@@ -183,6 +184,11 @@ int runDb(const QStringList& args, Streams& io) {
       return kExitFailure;
     }
     if (!history.exportCsv({*id, Role::Instructor}, out)) return failed();
+    QString why;
+    if (!closeOutputFile(out, why)) {
+      io.err << Cli::tr("microsim-cli db: cannot write %1").arg(argument) << " (" << why << ")\n";
+      return kExitFailure;
+    }
     io.out << Cli::tr("wrote %1").arg(argument) << '\n';
   } else if (action == QLatin1String("list-trainees")) {
     const QList<assessment::Trainee> people = history.trainees();
@@ -200,12 +206,11 @@ int runDb(const QStringList& args, Streams& io) {
                               {QStringLiteral("group"), t.group}});
     }
     if (parser.isSet(json)) {
-      QFile out(parser.value(json));
-      if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        io.err << Cli::tr("microsim-cli db: cannot write %1").arg(parser.value(json)) << '\n';
+      QString why;
+      if (!writeOutputFile(parser.value(json), QJsonDocument(rows).toJson(), why)) {
+        io.err << Cli::tr("microsim-cli db: cannot write %1").arg(parser.value(json)) << " (" << why << ")\n";
         return kExitFailure;
       }
-      out.write(QJsonDocument(rows).toJson());
     }
   } else if (action == QLatin1String("add-trainee")) {
     const auto id = history.addTrainee(argument, parser.value(group));

@@ -3,6 +3,7 @@
 // stiffness and alive flag, fixed nodes, control nodes with their targets, surface
 // triangles and where each declared object landed. Prints a summary; --json writes it all.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "cli/spring_scene_input.h"
 
@@ -118,10 +119,9 @@ int runExport(const QStringList& args, Streams& io) {
   row(Cli::tr("triangles"), static_cast<long long>(m.triangles().size()));
 
   if (parser.isSet(json)) {
-    QFile file(parser.value(json));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QByteArray::fromStdString(networkJson(*scene).dump() + "\n")) < 0) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString())
+    QString why;
+    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(networkJson(*scene).dump() + "\n"), why)) {
+      io.err << prefix << Cli::tr("cannot write %1: %2").arg(parser.value(json), why)
              << '\n';
       return kExitFailure;
     }

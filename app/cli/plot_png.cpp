@@ -1,5 +1,8 @@
 #include "cli/plot_png.h"
 
+#include "cli/output_file.h"
+
+#include <QBuffer>
 #include <QImage>
 #include <QPainter>
 #include <QPainterPath>
@@ -160,7 +163,12 @@ bool writePlotPng(const std::vector<bench::BenchPlot>& plots, const QString& fil
   painter.setRenderHint(QPainter::Antialiasing);
   for (std::size_t i = 0; i < plots.size(); ++i) drawPanel(painter, plots[i], static_cast<int>(i) * kPanelHeight);
   painter.end();
-  return image.save(file, "PNG");
+  // encoded in memory first: QImage::save does not see a full disk
+  QByteArray png;
+  QBuffer buffer(&png);
+  if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) return false;
+  QString why;
+  return writeOutputFile(file, png, why);
 }
 
 }  // namespace microsim::cli

@@ -3,6 +3,7 @@
 // a recording, from the scripted stitch, or idle hands), and prints the final state hash,
 // the events and the per-stage step times (median, p99, max).
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "cli/recording_text.h"
 #include "cli/spring_scene_input.h"
@@ -310,10 +311,9 @@ int runRun(const QStringList& args, Streams& io) {
       const Spread& v = spreads[static_cast<std::size_t>(s)];
       doc["timings_ms"][stageKeys[s]] = {{"median", v.median}, {"p99", v.p99}, {"max", v.max}};
     }
-    QFile file(parser.value(json));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QByteArray::fromStdString(doc.dump(1) + "\n")) < 0) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString()) << '\n';
+    QString why;
+    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(doc.dump(1) + "\n"), why)) {
+      io.err << prefix << Cli::tr("cannot write %1: %2").arg(parser.value(json), why) << '\n';
       return kExitFailure;
     }
   }

@@ -3,6 +3,7 @@
 // (deterministically), scores it with a rubric and prints the metrics, points and feedback
 // keys; with --db the attempt, its score and the recording are stored for the trainee.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "cli/recording_text.h"
 #include "cli/spring_scene_input.h"
@@ -312,10 +313,9 @@ int runScore(const QStringList& args, Streams& io) {
   if (parser.isSet(jsonOpt)) {
     nlohmann::json doc = scoreJson(score, rubric, scene->toStdString(), recordingPath.toStdString(), frames);
     if (stored) doc["attempt_id"] = *stored;
-    QFile file(parser.value(jsonOpt));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QByteArray::fromStdString(doc.dump(1) + "\n")) < 0) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString()) << '\n';
+    QString why;
+    if (!writeOutputFile(parser.value(jsonOpt), QByteArray::fromStdString(doc.dump(1) + "\n"), why)) {
+      io.err << prefix << Cli::tr("cannot write %1: %2").arg(parser.value(jsonOpt), why) << '\n';
       return kExitFailure;
     }
   }

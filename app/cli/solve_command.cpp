@@ -3,6 +3,7 @@
 // builds the spring network, runs one solve from rest with the scene's controls, prints
 // a short table and writes the final positions and the solve report as JSON.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "cli/spring_scene_input.h"
 #include "microsim/sim/solve/solver.h"
@@ -233,10 +234,9 @@ int runSolve(const QStringList& args, Streams& io) {
     for (int i = 0; i < model.nodeCount(); ++i)
       positions.push_back({state.x(0, i), state.x(1, i), state.x(2, i)});
     doc["positions"] = std::move(positions);
-    QFile file(parser.value(json));
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QByteArray::fromStdString(doc.dump() + "\n")) < 0) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(file.fileName(), file.errorString())
+    QString why;
+    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(doc.dump() + "\n"), why)) {
+      io.err << prefix << Cli::tr("cannot write %1: %2").arg(parser.value(json), why)
              << '\n';
       return kExitFailure;
     }

@@ -3,7 +3,9 @@
 // seconds (or, with --once, until the server closes the link), and reports per device the
 // accepted poses, the last one and the rate, and the refused messages by reason. --record
 // writes every accepted pose and channel value, in arrival order, as a tracker stream
-// (tracking/pose_stream.h) that ReplaySource and `calibrate pivot` read.
+// (tracking/pose_stream.h) that ReplaySource and `calibrate pivot` read; each sample is
+// flushed as it arrives, so a killed `track` leaves every complete sample, and a write
+// that fails (disk full) stops the recording with exit code 1.
 //
 // JSON:
 //   {"host": "127.0.0.1", "port": 18944, "connections": 1,
@@ -13,6 +15,7 @@
 //    "rejected": {"count": 3, "reasons": {"bad_crc": 1, "too_fast": 2, ...every reason...}}}
 // rate_hz = (received − 1) / (last time − first time), from the messages' timestamps.
 #include "cli/commands.h"
+#include "cli/output_file.h"
 
 #include "tracking/igtl_client.h"
 #include "tracking/pose_stream.h"
@@ -101,23 +104,35 @@ int runTrack(const QStringList& args, Streams& io) {
   }
   config.reconnect = !parser.isSet(once);
 
+  // the stream file before the link, so that a bad path fails at once
+  tracking::PoseStreamWriter writer;
+  if (parser.isSet(record) && !writer.open(parser.value(record)).ok()) {
+    io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(record)) << '\n';
+    return kExitFailure;
+  }
+  QEventLoop loop;
+  bool writeFailed = false;
+  const auto keep = [&writer, &writeFailed, &loop](const tracking::StreamSample& sample) {
+    if (!writer.isOpen() || writeFailed) return;
+    writeFailed = !writer.append(sample).ok();
+    if (writeFailed) loop.quit();
+  };
+
   // record every accepted pose and channel value on this thread
   std::map<std::string, DeviceRecord> devices;
   std::map<std::string, ChannelRecord> channels;
-  tracking::PoseStream stream;
   QObject receiver;
-  QEventLoop loop;
   tracking::IgtlClient client(config);
-  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&devices, &stream](const RawPose& pose) {
-    stream.samples.emplace_back(pose);
+  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&devices, &keep](const RawPose& pose) {
+    keep(pose);
     DeviceRecord& d = devices[pose.device];
     if (d.received == 0) d.firstTime = pose.time;
     ++d.received;
     d.last = pose.matrix;
     d.lastTime = pose.time;
   });
-  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&channels, &stream](const ChannelValue& v) {
-    stream.samples.emplace_back(v);
+  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&channels, &keep](const ChannelValue& v) {
+    keep(v);
     ChannelRecord& c = channels[v.channel];
     ++c.received;
     c.last = v.value;
@@ -133,6 +148,7 @@ int runTrack(const QStringList& args, Streams& io) {
   const tracking::TrackerStatus status = client.status();
 
   if (status.connections == 0) {
+    if (writer.isOpen()) writer.finish();
     io.err << Cli::tr("microsim-cli track: could not connect to %1:%2: %3")
                   .arg(config.host)
                   .arg(config.port)
@@ -159,7 +175,7 @@ int runTrack(const QStringList& args, Streams& io) {
       io.out << "  " << QString::fromLatin1(tracking::rejectionKey(reason)).leftJustified(18) << status.rejected[reason] << '\n';
   }
 
-  if (parser.isSet(record) && !tracking::writePoseStream(parser.value(record), stream).ok()) {
+  if (writeFailed || (writer.isOpen() && !writer.finish().ok())) {
     io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(record)) << '\n';
     return kExitFailure;
   }
@@ -189,8 +205,8 @@ int runTrack(const QStringList& args, Streams& io) {
         {QStringLiteral("channels"), chans},
         {QStringLiteral("rejected"), QJsonObject{{QStringLiteral("count"), static_cast<qint64>(status.rejected.total())},
                                                  {QStringLiteral("reasons"), reasons}}}};
-    QFile f(parser.value(json));
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(QJsonDocument(root).toJson()) < 0) {
+    QString why;
+    if (!writeOutputFile(parser.value(json), QJsonDocument(root).toJson(), why)) {
       io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(json)) << '\n';
       return kExitFailure;
     }

@@ -11,6 +11,9 @@ namespace {
 
 const QString kFormat = QStringLiteral("microsim-tracker-stream");
 constexpr int kVersion = 1;
+// the writer's first line; a file that starts with it and does not parse was cut short
+const QByteArray kHeaderLine = QByteArrayLiteral(R"({"format":"microsim-tracker-stream","version":1,"samples":[)") + '\n';
+const QByteArray kEndLine = QByteArrayLiteral("]}\n");
 
 QJsonObject toJson(const RawPose& p) {
   QJsonArray m;
@@ -69,18 +72,34 @@ double sampleTime(const StreamSample& sample) {
   return std::visit([](const auto& s) { return s.time; }, sample);
 }
 
+// one sample's line, without its line end
+QByteArray sampleLine(const StreamSample& sample, bool first) {
+  const QJsonObject o = std::visit([](const auto& x) { return toJson(x); }, sample);
+  return (first ? QByteArray() : QByteArrayLiteral(",")) + QJsonDocument(o).toJson(QJsonDocument::Compact);
+}
+
 QByteArray encodePoseStream(const PoseStream& stream) {
-  QJsonArray samples;
-  for (const StreamSample& s : stream.samples) samples.append(std::visit([](const auto& x) { return toJson(x); }, s));
-  const QJsonObject root{{QStringLiteral("format"), kFormat},
-                         {QStringLiteral("version"), kVersion},
-                         {QStringLiteral("samples"), samples}};
-  return QJsonDocument(root).toJson(QJsonDocument::Compact);
+  QByteArray bytes = kHeaderLine;
+  bool first = true;
+  for (const StreamSample& s : stream.samples) {
+    bytes += sampleLine(s, first) + '\n';
+    first = false;
+  }
+  return bytes + kEndLine;
 }
 
 PoseStreamStatus decodePoseStream(const QByteArray& json, PoseStream& out) {
   PoseStreamStatus status;
-  const QJsonDocument doc = QJsonDocument::fromJson(json);
+  QJsonDocument doc = QJsonDocument::fromJson(json);
+  bool truncated = false;
+  // a writer stopped mid-stream: keep the complete lines and close the array
+  if (!doc.isObject() && json.startsWith(kHeaderLine)) {
+    const qsizetype lastLineEnd = json.lastIndexOf('\n');
+    QByteArray closed = json.left(lastLineEnd + 1);
+    if (closed.endsWith(kEndLine)) closed.chop(kEndLine.size());
+    doc = QJsonDocument::fromJson(closed + kEndLine);
+    truncated = true;
+  }
   if (!doc.isObject()) {
     status.error = PoseStreamError::NotJson;
     return status;
@@ -105,6 +124,7 @@ PoseStreamStatus decodePoseStream(const QByteArray& json, PoseStream& out) {
     out.samples.push_back(std::move(s));
   }
   status.field.clear();
+  if (truncated) status.error = PoseStreamError::Truncated;
   return status;
 }
 
@@ -115,9 +135,42 @@ PoseStreamStatus readPoseStream(const QString& path, PoseStream& out) {
 }
 
 PoseStreamStatus writePoseStream(const QString& path, const PoseStream& stream) {
-  QFile f(path);
-  if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(encodePoseStream(stream)) < 0)
-    return {PoseStreamError::CannotOpen, -1, {}};
+  PoseStreamWriter writer;
+  PoseStreamStatus s = writer.open(path);
+  for (std::size_t i = 0; s.ok() && i < stream.samples.size(); ++i) s = writer.append(stream.samples[i]);
+  if (s.ok()) s = writer.finish();
+  return s;
+}
+
+PoseStreamStatus PoseStreamWriter::open(const QString& path) {
+  file_.close();
+  file_.setFileName(path);
+  first_ = true;
+  if (!file_.open(QIODevice::WriteOnly | QIODevice::Truncate)) return {PoseStreamError::CannotOpen, -1, {}};
+  return writeLine(kHeaderLine);
+}
+
+PoseStreamStatus PoseStreamWriter::append(const StreamSample& sample) {
+  if (!file_.isOpen()) return {PoseStreamError::CannotWrite, -1, {}};
+  const PoseStreamStatus s = writeLine(sampleLine(sample, first_) + '\n');
+  first_ = false;
+  return s;
+}
+
+PoseStreamStatus PoseStreamWriter::finish() {
+  if (!file_.isOpen()) return {PoseStreamError::CannotWrite, -1, {}};
+  PoseStreamStatus s = writeLine(kEndLine);
+  file_.close();
+  if (s.ok() && file_.error() != QFileDevice::NoError) s = {PoseStreamError::CannotWrite, -1, {}};
+  return s;
+}
+
+// QFile buffers: the flush is where a full disk shows, and what a killed process keeps
+PoseStreamStatus PoseStreamWriter::writeLine(const QByteArray& line) {
+  if (file_.write(line) != line.size() || !file_.flush()) {
+    file_.close();
+    return {PoseStreamError::CannotWrite, -1, {}};
+  }
   return {};
 }
 

@@ -9,9 +9,15 @@
 //                {"channel": "Grip", "time": 0.02, "value": 0.4}, ...]}
 // time in s on the source's clock, non-decreasing per device/channel is NOT required
 // here (the replay's PoseFilter refuses what a live link would refuse).
+//
+// Files are written one sample per line, each line flushed as it is appended
+// (PoseStreamWriter): the header line, then "{sample}", then ",{sample}" per line, then
+// "]}". A process killed while recording leaves a file that ends inside or after a line;
+// reading it gives Truncated with every complete line's sample kept.
 
 #include "tracking/tracker_types.h"
 
+#include <QFile>
 #include <QString>
 
 #include <variant>
@@ -31,6 +37,8 @@ enum class PoseStreamError {
   NotJson,      ///< not a JSON object
   WrongFormat,  ///< "format" is not "microsim-tracker-stream" or the version is newer
   BadSample,    ///< a sample lacks a field or has a wrong one (see PoseStreamStatus)
+  Truncated,    ///< the writer was stopped before the end; `out` holds every complete sample
+  CannotWrite,  ///< a sample could not be written (disk full, ...)
 };
 
 struct PoseStreamStatus {
@@ -47,5 +55,22 @@ QByteArray encodePoseStream(const PoseStream& stream);
 PoseStreamStatus decodePoseStream(const QByteArray& json, PoseStream& out);
 PoseStreamStatus readPoseStream(const QString& path, PoseStream& out);
 PoseStreamStatus writePoseStream(const QString& path, const PoseStream& stream);
+
+/// Writes a stream as it arrives, one flushed line per sample (see the top of this file).
+class PoseStreamWriter {
+ public:
+  /// Creates or empties `path` and writes the header line.
+  PoseStreamStatus open(const QString& path);
+  PoseStreamStatus append(const StreamSample& sample);
+  /// Writes the closing line and closes the file.
+  PoseStreamStatus finish();
+  bool isOpen() const { return file_.isOpen(); }
+
+ private:
+  PoseStreamStatus writeLine(const QByteArray& line);
+
+  QFile file_;
+  bool first_ = true;
+};
 
 }  // namespace microsim::tracking

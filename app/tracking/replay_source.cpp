@@ -199,7 +199,8 @@ std::unique_ptr<ReplaySource> openReplay(const QString& path, ReplayConfig confi
   // a raw tracker stream
   PoseStream stream;
   status.stream = decodePoseStream(bytes, stream);
-  if (!status.stream.ok()) {
+  // like an unfinished .msrec: a stream cut short plays its complete samples
+  if (!status.stream.ok() && status.stream.error != PoseStreamError::Truncated) {
     status.error = status.stream.error == PoseStreamError::BadSample ? ReplayFileError::Damaged : ReplayFileError::NotAReplay;
     return nullptr;
   }
