@@ -1,12 +1,13 @@
 #include "microsim/sim/mesh/spring_model.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace microsim::sim {
 
 int SpringModel::addNode(const Vec3& position, double mass, double damping) {
   const int index = nodeCount();
-  rest_.conservativeResize(3, index + 1);
+  if (index == rest_.cols()) rest_.conservativeResize(3, std::max<Eigen::Index>(16, 2 * rest_.cols()));
   rest_.col(index) = position;
   mass_.push_back(mass);
   damping_.push_back(damping);

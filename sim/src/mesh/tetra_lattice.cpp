@@ -42,7 +42,7 @@ void addBoundarySquare(SpringModel& m, const Block& b, const std::array<int, 3>&
   else
     tris = {{{p10, p11, p01}, {p10, p01, p00}}};
   for (auto t : tris) {
-    const Points& x = m.restPositions();
+    const auto x = m.restPositions();
     const Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
     if (n.dot(outward) < 0.0) std::swap(t[1], t[2]);
     m.addTriangle(t[0], t[1], t[2]);
@@ -99,7 +99,7 @@ TetraMesh tetraLattice(const TetraLatticeDef& def) {
       {{{0, 0, 1}, {0, 0, 0}, {1, 0, 1}, {0, 1, 1}}},
       {{{1, 1, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}}},
   }};
-  const Points& rest = m.restPositions();
+  const auto rest = m.restPositions();
   for (int z = 0; z + 1 < b.nz; ++z) {
     for (int y = 0; y + 1 < b.ny; ++y) {
       for (int x = 0; x + 1 < b.nx; ++x) {

@@ -237,6 +237,29 @@ TEST(SpringScene, NegativeAndNonFiniteValues) {
       SceneErrorKind::NonFinite);
 }
 
+TEST(SpringScene, AGeneratedMeshTooLargeToBuildIsRefusedByName) {
+  // 200³ lattice nodes (8 million) would take gigabytes before anything could use them
+  const SceneError e = errorOf(R"({"objects": [{"type": "lattice", "size": [200, 200, 200]}]})");
+  EXPECT_EQ(e.kind, SceneErrorKind::InvalidValue);
+  EXPECT_EQ(e.field, "objects[0].size");
+}
+
+TEST(SpringScene, ADefaultGridMergesAfterOtherObjects) {
+  // found by the spring-scene fuzzer: merging a default 100 by 100 grid after other objects
+  // copied every node once per node added (quadratic); the merged counts are the contract
+  const SceneLoad r = parseSpringScene(R"({"objects": [
+      {"type": "lattice", "size": [3, 3, 3]},
+      {"type": "grid", "fixed": [0]},
+      {"type": "spring-mesh", "nodes": [[0, 0, 0], [2, 0, 0]], "links": [[0, 1, 5, 1.5]]}]})",
+                                       "t.json");
+  ASSERT_TRUE(std::holds_alternative<SpringScene>(r));
+  const SpringScene& s = sceneOf(r);
+  EXPECT_EQ(s.model.nodeCount(), 27 + 101 * 101 + 2);
+  EXPECT_EQ(s.model.restPositions().cols(), s.model.nodeCount());
+  EXPECT_TRUE(s.model.isFixed(27));
+  EXPECT_EQ(s.model.restPositions().col(27 + 101 * 101 + 1), Vec3(2, 0, 0));
+}
+
 TEST(SpringScene, ControlErrors) {
   const SceneError dup = errorOf(mesh(
       "[[0, 1, 1]]",

@@ -69,7 +69,9 @@ class SpringModel {
   int linkCount() const { return static_cast<int>(links_.size()); }
   int aliveLinkCount() const { return aliveLinks_; }
 
-  const Points& restPositions() const { return rest_; }
+  /// Rest positions, 3 by nodeCount() (mm). A view: bind it with `const auto`, since
+  /// binding it to `const Points&` would copy the whole matrix.
+  auto restPositions() const { return rest_.leftCols(nodeCount()); }
   double mass(int i) const { return mass_[i]; }
   double damping(int i) const { return damping_[i]; }
   const std::vector<double>& masses() const { return mass_; }
@@ -97,6 +99,8 @@ class SpringModel {
   Vec3 gravity = Vec3::Zero();
 
  private:
+  // rest positions with spare columns past nodeCount(): addNode grows the capacity
+  // geometrically, so building an n-node mesh costs O(n), not O(n²) copies
   Points rest_{3, 0};
   std::vector<double> mass_;
   std::vector<double> damping_;
