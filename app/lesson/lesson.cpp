@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -322,9 +323,14 @@ std::variant<Lesson, LessonError> loadLesson(const QString& path) {
   if (!f.open(QIODevice::ReadOnly))
     return LessonError{LessonErrorKind::CannotOpen, file, {}, -1, f.errorString()};
   QJsonParseError parseError;
-  const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
-  if (parseError.error != QJsonParseError::NoError)
-    return LessonError{LessonErrorKind::NotJson, file, {}, parseError.offset, parseError.errorString()};
+  const QByteArray text = f.readAll();
+  const QJsonDocument doc = QJsonDocument::fromJson(text, &parseError);
+  if (parseError.error != QJsonParseError::NoError) {
+    // Qt places some errors at the end of input one past the last byte (e.g. a file cut off
+    // inside a string); the error points at the text, so it is clamped to its end
+    const int offset = static_cast<int>(std::min<qsizetype>(parseError.offset, text.size()));
+    return LessonError{LessonErrorKind::NotJson, file, {}, offset, parseError.errorString()};
+  }
   if (!doc.isObject())
     return LessonError{LessonErrorKind::WrongType, file, {}, -1, QStringLiteral("object")};
   return parse(doc.object(), file);

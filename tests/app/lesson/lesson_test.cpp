@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 namespace microsim::lesson {
 namespace {
 
@@ -90,6 +92,16 @@ TEST(Lesson, ReportsSyntaxErrorsWithAnOffset) {
   const LessonError e = errorOf(R"({"id": "x", )");
   EXPECT_EQ(e.kind, LessonErrorKind::NotJson);
   EXPECT_GT(e.offset, 0);
+}
+
+TEST(Lesson, PlacesTheErrorOfAFileCutOffInAStringInsideTheFile) {
+  // found by the lesson fuzzer: Qt reports a string left open at the end of the input one
+  // byte past the end
+  const char* text = "{\"id\": \"cut off";
+  const LessonError e = errorOf(text);
+  EXPECT_EQ(e.kind, LessonErrorKind::NotJson);
+  EXPECT_GT(e.offset, 0);
+  EXPECT_LE(e.offset, static_cast<int>(std::strlen(text)));
 }
 
 TEST(Lesson, ReportsAMissingFile) {
