@@ -65,11 +65,23 @@ bool HistoryDatabase::backup(const QString& toFile) {
   if (driver_ != Driver::SQLite) return fail(HistoryError::Unsupported);
   const QFileInfo target(toFile);
   if (target.exists()) return fail(HistoryError::FileError, target.absoluteFilePath());
-  // VACUUM INTO reads one snapshot: a consistent copy while others write
+  // VACUUM INTO reads one snapshot: a consistent copy while others write. It goes to a
+  // side file renamed when complete, so a full disk or a killed process never leaves a
+  // half-written file under the backup's name.
+  const QString partial = target.absoluteFilePath() + QStringLiteral(".part");
+  QFile::remove(partial);
   QSqlQuery q(connection());
   q.prepare(QStringLiteral("VACUUM INTO ?"));
-  q.addBindValue(target.absoluteFilePath());
-  if (!q.exec()) return fail(HistoryError::FileError, q.lastError().text());
+  q.addBindValue(partial);
+  if (!q.exec()) {
+    const QString why = q.lastError().text();
+    QFile::remove(partial);
+    return fail(HistoryError::FileError, why);
+  }
+  if (!QFile::rename(partial, target.absoluteFilePath())) {
+    QFile::remove(partial);
+    return fail(HistoryError::FileError, target.absoluteFilePath());
+  }
   return succeed();
 }
 

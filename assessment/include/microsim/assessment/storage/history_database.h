@@ -132,6 +132,8 @@ class HistoryDatabase {
 
   // ---- files --------------------------------------------------------------------------
   /// A consistent copy of the open SQLite database (VACUUM INTO), safe while in use.
+  /// Written as `toFile`.part and renamed when complete; refused (FileError) when
+  /// `toFile` exists.
   bool backup(const QString& toFile);
   /// Replaces the open SQLite database by `fromFile` after checking that it is a microsim
   /// history no newer than this program; then reopens and migrates it.

@@ -1,0 +1,126 @@
+// A full disk, as the user meets it through microsim-cli: every output path is /dev/full,
+// where open() succeeds and every write fails with ENOSPC. Each command must say it could
+// not write (exit code 1), never report success, and leave the history it read intact.
+#include "support/cli_runner.h"
+
+#include "microsim/assessment/storage/history_database.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using microsim::assessment::AttemptMode;
+using microsim::assessment::HistoryDatabase;
+using microsim::assessment::Role;
+using microsim::testing::CliRun;
+using microsim::testing::runCli;
+
+const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
+const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
+const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
+const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
+const QString kFull = QStringLiteral("/dev/full");
+
+class DiskFull : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!QFile::exists(kFull)) GTEST_SKIP() << "no /dev/full on this system";
+  }
+
+  // a history with a trainee, an instructor and one begun attempt
+  QString makeHistory() {
+    const QString path = dir_.filePath(QStringLiteral("history.sqlite"));
+    HistoryDatabase db;
+    EXPECT_TRUE(db.open(path).ok());
+    db.setPasswordIterations(1000);
+    const qint64 trainee = db.addTrainee(QStringLiteral("Ada")).value_or(0);
+    EXPECT_TRUE(db.addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).has_value());
+    EXPECT_TRUE(db.beginAttempt(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).has_value());
+    return path;
+  }
+
+  QTemporaryDir dir_;
+};
+
+// the message names the path and the system's reason
+void expectFullDiskError(const CliRun& r) {
+  EXPECT_EQ(r.exitCode, 1) << r.out.toStdString() << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write"))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(kFull)) << r.err.toStdString();
+}
+
+TEST_F(DiskFull, JsonOutputOfEveryCommandIsAnError) {
+  const QStringList commands[] = {
+      {QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--frames"), QStringLiteral("3"),
+       QStringLiteral("--json"), kFull},
+      {QStringLiteral("solve"), QStringLiteral("--lattice"), QStringLiteral("3"), QStringLiteral("--iterations"),
+       QStringLiteral("5"), QStringLiteral("--json"), kFull},
+      {QStringLiteral("export"), QStringLiteral("--lattice"), QStringLiteral("3"), QStringLiteral("--json"), kFull},
+      {QStringLiteral("bench"), QStringLiteral("fig5"), QStringLiteral("--quick"), QStringLiteral("--json"), kFull},
+      {QStringLiteral("bench"), QStringLiteral("fig5"), QStringLiteral("--quick"), QStringLiteral("--plot"), kFull},
+  };
+  for (const QStringList& args : commands) {
+    SCOPED_TRACE(args.join(QLatin1Char(' ')).toStdString());
+    expectFullDiskError(runCli(args));
+  }
+}
+
+TEST_F(DiskFull, ScoreJsonIsAnErrorAndTheAttemptIsStillStored) {
+  const QString db = makeHistory();
+  const CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--rubric"),
+                           kRubric, QStringLiteral("--scene"), kScene, QStringLiteral("--db"), db,
+                           QStringLiteral("--trainee"), QStringLiteral("Ada"), QStringLiteral("--json"), kFull});
+  expectFullDiskError(r);
+  // the score went to the history before the JSON was attempted
+  HistoryDatabase history;
+  ASSERT_TRUE(history.open(db).ok());
+  const qint64 ines = history.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+  const auto rows = history.attempts({ines, Role::Instructor});
+  ASSERT_EQ(rows.size(), 2);
+  EXPECT_TRUE(rows.back().score.has_value());
+}
+
+TEST_F(DiskFull, RunRecordFailsBeforeTheFirstStep) {
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--frames"),
+                           QStringLiteral("3"), QStringLiteral("--record"), kFull});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write the recording"))) << r.err.toStdString();
+}
+
+TEST_F(DiskFull, TrackRecordFailsBeforeConnecting) {
+  // no server is needed: the stream's first line is flushed before the link opens
+  const CliRun r = runCli({QStringLiteral("track"), QStringLiteral("--igtl"), QStringLiteral("127.0.0.1:1"),
+                           QStringLiteral("--record"), kFull, QStringLiteral("--once")});
+  expectFullDiskError(r);
+  EXPECT_FALSE(r.err.contains(QStringLiteral("could not connect"))) << r.err.toStdString();
+}
+
+TEST_F(DiskFull, DbOutputsAreErrorsAndTheHistoryIsUnchanged) {
+  const QString db = makeHistory();
+  const QStringList on = {QStringLiteral("--db"), db};
+
+  CliRun r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("export-csv"), kFull, QStringLiteral("--instructor"),
+                                QStringLiteral("Ines")} + on,
+                    120000, "s3cret-enough\n");
+  expectFullDiskError(r);
+  EXPECT_FALSE(r.out.contains(QStringLiteral("wrote"))) << r.out.toStdString();
+
+  r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("list-trainees"), QStringLiteral("--json"), kFull} + on);
+  expectFullDiskError(r);
+
+  // /dev/full exists: backup never writes over an existing file
+  r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("backup"), kFull} + on);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("could not be written"))) << r.err.toStdString();
+
+  HistoryDatabase history;
+  ASSERT_TRUE(history.open(db).ok());
+  EXPECT_EQ(history.trainees().size(), 2);
+  const qint64 ines = history.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+  EXPECT_EQ(history.attempts({ines, Role::Instructor}).size(), 1);
+}
+
+}  // namespace

@@ -1,0 +1,145 @@
+// A process killed (SIGKILL) in the middle of writing, through the real microsim-cli:
+// `track --record` keeps every sample it had received, readable as Truncated; a killed
+// `db backup` leaves the history as it was and no file under the backup's name.
+// (A killed graded attempt: tests/assessment/storage/history_crash_test.cpp.)
+#include "support/cli_runner.h"
+
+#include "app/tracking/igtl_test_server.h"
+#include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/history_database.h"
+#include "tracking/pose_stream.h"
+
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QThread>
+
+#include <gtest/gtest.h>
+
+#include <future>
+
+namespace {
+
+using microsim::assessment::AttemptMode;
+using microsim::assessment::AttemptScore;
+using microsim::assessment::HistoryDatabase;
+using microsim::assessment::Role;
+using microsim::testing::IgtlTestServer;
+namespace tracking = microsim::tracking;
+
+// microsim-cli started as a user would, left running
+void startCli(QProcess& p, const QStringList& args) {
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+  p.setProcessEnvironment(env);
+  p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
+  ASSERT_TRUE(p.waitForStarted());
+}
+
+std::size_t samplesIn(const QString& path) {
+  tracking::PoseStream s;
+  tracking::readPoseStream(path, s);
+  return s.samples.size();
+}
+
+TEST(Killed, TrackRecordKeepsEveryReceivedSampleReadableAsTruncated) {
+  constexpr int kPoses = 60;
+  std::vector<Eigen::Matrix4d> sent;
+  for (int i = 0; i < kPoses; ++i)
+    sent.push_back(microsim::testing::floatPose(0.01 * i, {0, 0, 1}, {1.0 * i, 2.0, -3.0}));
+  std::promise<void> killed;
+  IgtlTestServer server;
+  ASSERT_GT(server.port(), 0);
+  server.run([&sent, done = killed.get_future().share()](IgtlTestServer& s) {
+    if (!s.accept()) return;
+    for (std::size_t i = 0; i < sent.size(); ++i)
+      s.send(microsim::testing::transformMessage("Stylus", sent[i], 0.01 * static_cast<double>(i)));
+    // the link stays up until the client is dead
+    done.wait();
+    s.closeClient();
+  });
+  struct Release {
+    std::promise<void>& p;
+    ~Release() { p.set_value(); }
+  } release{killed};
+
+  QTemporaryDir dir;
+  const QString file = dir.filePath(QStringLiteral("stream.json"));
+  QProcess track;
+  startCli(track, {QStringLiteral("track"), QStringLiteral("--igtl"), QStringLiteral("127.0.0.1:%1").arg(server.port()),
+                   QStringLiteral("--duration"), QStringLiteral("600"), QStringLiteral("--record"), file});
+  // every pose on disk while the process still runs, then the kill
+  ASSERT_TRUE(QTest::qWaitFor([&] { return samplesIn(file) == sent.size(); }, 30000)) << samplesIn(file);
+  ASSERT_EQ(track.state(), QProcess::Running);
+  track.kill();
+  ASSERT_TRUE(track.waitForFinished());
+  EXPECT_EQ(track.exitStatus(), QProcess::CrashExit);
+
+  tracking::PoseStream back;
+  const tracking::PoseStreamStatus status = tracking::readPoseStream(file, back);
+  EXPECT_EQ(status.error, tracking::PoseStreamError::Truncated);
+  ASSERT_EQ(back.samples.size(), sent.size());
+  for (std::size_t i = 0; i < sent.size(); ++i) {
+    const auto& p = std::get<tracking::RawPose>(back.samples[i]);
+    EXPECT_EQ(p.device, "Stylus");
+    EXPECT_TRUE(p.matrix.isApprox(sent[i], 1e-6)) << i;
+  }
+
+  // cut inside the last line too: the complete lines are kept
+  QFile f(file);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  QByteArray bytes = f.readAll();
+  bytes.chop(7);
+  EXPECT_EQ(tracking::decodePoseStream(bytes, back).error, tracking::PoseStreamError::Truncated);
+  EXPECT_EQ(back.samples.size(), sent.size() - 1);
+}
+
+TEST(Killed, BackupLeavesTheHistoryAndNoFileUnderTheBackupsName) {
+  QTemporaryDir dir;
+  const QString db = dir.filePath(QStringLiteral("history.sqlite"));
+  constexpr int kAttempts = 40;
+  {
+    // big enough (40 recordings of 1 MB) that the copy takes a while
+    HistoryDatabase history;
+    ASSERT_TRUE(history.open(db).ok());
+    const qint64 trainee = history.addTrainee(QStringLiteral("Ada")).value_or(0);
+    QByteArray recording(1 << 20, '\0');
+    for (int i = 0; i < kAttempts; ++i) {
+      for (qsizetype k = 0; k < recording.size(); k += 4096) recording[k] = static_cast<char>(i + k);
+      const qint64 id = history.beginAttempt(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).value_or(0);
+      AttemptScore score;
+      score.score = i;
+      score.rubricId = "r";
+      ASSERT_TRUE(history.finishAttempt(id, score, recording));
+    }
+  }
+  const QString backup = dir.filePath(QStringLiteral("backup.sqlite"));
+  const QString partial = backup + QStringLiteral(".part");
+
+  QProcess p;
+  startCli(p, {QStringLiteral("db"), QStringLiteral("backup"), backup, QStringLiteral("--db"), db});
+  // killed as soon as the copy has begun
+  while (!QFile::exists(partial) && p.state() == QProcess::Running) QThread::yieldCurrentThread();
+  ASSERT_EQ(p.state(), QProcess::Running) << "the backup finished before it could be killed";
+  p.kill();
+  ASSERT_TRUE(p.waitForFinished());
+  EXPECT_FALSE(QFile::exists(backup));
+
+  // the history keeps every attempt, and the next backup replaces the stale side file
+  const microsim::testing::CliRun again =
+      microsim::testing::runCli({QStringLiteral("db"), QStringLiteral("backup"), backup, QStringLiteral("--db"), db});
+  ASSERT_EQ(again.exitCode, 0) << again.err.toStdString();
+  EXPECT_FALSE(QFile::exists(partial));
+  for (const QString& path : {db, backup}) {
+    HistoryDatabase history;
+    ASSERT_TRUE(history.open(path).ok()) << path.toStdString();
+    history.setPasswordIterations(1000);
+    const qint64 ines = history.addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+    const auto rows = history.attempts({ines, Role::Instructor});
+    ASSERT_EQ(rows.size(), kAttempts) << path.toStdString();
+    EXPECT_EQ(rows.back().score.value_or(-1.0), kAttempts - 1.0);
+  }
+}
+
+}  // namespace
