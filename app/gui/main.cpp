@@ -3,6 +3,7 @@
 // the main window.
 #include "gui/app_settings.h"
 #include "gui/main_window.h"
+#include "gui/render/surface_format.h"
 #include "gui/screenshots.h"
 #include "i18n/translations.h"
 
@@ -11,18 +12,12 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSettings>
-#include <QSurfaceFormat>
 
 #include <cstdio>
 
 int main(int argc, char** argv) {
-  // the viewport's shaders are GLSL 3.30 core; ask before any context exists
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  format.setDepthBufferSize(24);
-  format.setSamples(4);
-  QSurfaceFormat::setDefaultFormat(format);
+  // the viewport's OpenGL context; ask before any context exists
+  microsim::gui::useMicroscopeSurfaceFormat();
 
   QApplication app(argc, argv);
   QCoreApplication::setOrganizationName(QStringLiteral("microsim"));

@@ -1,15 +1,10 @@
 #pragma once
-// The same OpenGL context request as the app's main(), for tests that show a viewport.
-#include <QSurfaceFormat>
+// The app's OpenGL context request (gui/render/surface_format.h) for tests that show a
+// viewport, without multisampling so pixel checks see crisp edges.
+#include "gui/render/surface_format.h"
 
 namespace microsim::gui {
 
-inline void requestCoreProfile() {
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  format.setDepthBufferSize(24);
-  QSurfaceFormat::setDefaultFormat(format);
-}
+inline void requestCoreProfile() { useMicroscopeSurfaceFormat(0); }
 
 }  // namespace microsim::gui

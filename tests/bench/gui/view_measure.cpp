@@ -1,18 +1,50 @@
-// Measures the microscope viewport while the simulation thread runs a scene in real time:
-//   microsim-view-measure [SECONDS=10] [SCENE=resources/scenes/anastomosis.json] [WxH=1280x800]
-// prints the viewport's frame rate (redrawing as fast as it can), the simulation's achieved
-// step rate and step times, and the latency from a tool move (submitFrame) to the first
-// drawn frame whose snapshot shows it. A measurement, never a test: nothing is asserted.
+// Measures the microscope viewport (issue #7): its frame rate while the simulation thread runs a
+// scene in real time, the simulation's achieved step rate, and the tool-move latency.
+//
+//   xvfb-run -a -s "-screen 0 1920x1080x24" microsim-view-measure SECONDS [SCENE|none] [WxH]
+//       [--idle] [--samples N]
+//
+// SCENE defaults to resources/scenes/anastomosis.json and WxH to 1280x800; the surface format
+// is the app's (gui/render/surface_format.h, N = 4 samples unless --samples says otherwise).
+// Three cases:
+//   live (default)  the scene is loaded in RealTime mode and SimulationRunner steps it at the
+//                   scene's rate while the viewport redraws;
+//   --idle          the scene is loaded but never started: the same drawing, no simulation;
+//   none            no scene: the viewport's placeholder vessel, no simulation.
+// The viewport redraws as fast as it can: each presented frame schedules the next update.
+//
+// Frame rate: frames presented (QOpenGLWidget::frameSwapped, emitted once the top-level window
+// has composed the widget's framebuffer and returned from swapBuffers) per second of
+// std::chrono::steady_clock, from the first presented frame to the first one past SECONDS.
+//
+// Latency (live only): the right forceps' pose jumps between two places, each move 100–300 ms
+// (uniformly random, fixed seed) after the previous one was presented, so moves fall at random
+// phases of the frame and none is dropped for a slow frame. Start:
+// the steady_clock time just before SimulationRunner::submitFrame is called with the new
+// pose (GUI thread). End, two figures: "drawn" is the end of the first paintGL whose snapshot
+// (Viewport::drawnSnapshot) has the forceps at the new place; "presented" is the frameSwapped
+// that follows that paintGL, i.e. the frame is on the window. Between them: wait for the next
+// 100 Hz step, the step, the snapshot hand-over, the wait for the frame in progress to end,
+// the frame that shows it. ("drawn" only means the commands were issued: llvmpipe may finish
+// rasterising at the flush.)
+//
+// The machine's load average (/proc/loadavg) is printed before and after, since the figures
+// depend on what else runs. A measurement, never a test: nothing is asserted, and it is not
+// registered with CTest.
+#include "gui/render/surface_format.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
 
 #include <QApplication>
-#include <QSurfaceFormat>
+#include <QCommandLineParser>
+#include <QFile>
 #include <QTimer>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <random>
 #include <vector>
 
 using microsim::gui::SimulationRunner;
@@ -20,102 +52,164 @@ using microsim::gui::Viewport;
 namespace sim = microsim::sim;
 using Clock = std::chrono::steady_clock;
 
+namespace {
+
+double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+// nearest-rank percentile (0 < p ≤ 1) of unsorted values; 0 when empty
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size())));
+  return v[std::clamp<std::size_t>(rank, 1, v.size()) - 1];
+}
+
+QByteArray loadAverage() {
+  QFile file(QStringLiteral("/proc/loadavg"));
+  return file.open(QIODevice::ReadOnly) ? file.readLine().trimmed() : QByteArrayLiteral("unknown");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  QSurfaceFormat format;
-  format.setVersion(3, 3);
-  format.setProfile(QSurfaceFormat::CoreProfile);
-  format.setDepthBufferSize(24);
-  format.setSwapInterval(0);
-  QSurfaceFormat::setDefaultFormat(format);
+  // the app's context, before QApplication; --samples is applied below, before any context
+  microsim::gui::useMicroscopeSurfaceFormat();
   QApplication app(argc, argv);
 
-  const double seconds = argc > 1 ? std::atof(argv[1]) : 10.0;
-  const QString scene = argc > 2 ? QString::fromLocal8Bit(argv[2])
-                                 : QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
+  QCommandLineParser parser;
+  parser.addPositionalArgument(QStringLiteral("seconds"), QStringLiteral("how long to measure (default 10)"));
+  parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("scene file, or none (default anastomosis)"));
+  parser.addPositionalArgument(QStringLiteral("size"), QStringLiteral("viewport WxH (default 1280x800)"));
+  const QCommandLineOption idleOption(QStringLiteral("idle"), QStringLiteral("load the scene but do not run it"));
+  const QCommandLineOption samplesOption(QStringLiteral("samples"), QStringLiteral("multisampling (default the app's)"),
+                                         QStringLiteral("n"), QString::number(microsim::gui::kMicroscopeSamples));
+  parser.addOption(idleOption);
+  parser.addOption(samplesOption);
+  parser.addHelpOption();
+  parser.process(app);
+  const QStringList args = parser.positionalArguments();
+  const double seconds = !args.empty() ? args[0].toDouble() : 10.0;
+  const QString scene = args.size() > 1 ? args[1]
+                                        : QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
   int width = 1280;
   int height = 800;
-  if (argc > 3) std::sscanf(argv[3], "%dx%d", &width, &height);
+  if (args.size() > 2 && std::sscanf(qPrintable(args[2]), "%dx%d", &width, &height) != 2) {
+    std::fprintf(stderr, "size must be WxH, not %s\n", qPrintable(args[2]));
+    return 2;
+  }
+  const int samples = parser.value(samplesOption).toInt();
+  microsim::gui::useMicroscopeSurfaceFormat(samples);
 
   SimulationRunner runner;
-  sim::SceneError error;
-  if (!runner.load(scene, sim::StepMode::RealTime, &error)) {
+  const bool withScene = scene != QStringLiteral("none");
+  if (withScene && !runner.load(scene, sim::StepMode::RealTime)) {
     std::fprintf(stderr, "cannot load %s\n", qPrintable(scene));
     return 1;
   }
+  const bool live = withScene && !parser.isSet(idleOption);
+
   Viewport view;
   view.resize(width, height);
-  view.setRunner(&runner);
-  view.show();
+  if (withScene) view.setRunner(&runner);
 
-  std::vector<double> medians, p99s;
-  QObject::connect(&runner, &SimulationRunner::stepTimes, &app, [&](double m, double p) {
-    medians.push_back(m);
-    p99s.push_back(p);
+  std::vector<double> stepMedians, stepP99s;
+  QObject::connect(&runner, &SimulationRunner::stepTimes, &app, [&](double median, double p99) {
+    stepMedians.push_back(median);
+    stepP99s.push_back(p99);
   });
 
-  // the right forceps jumps between two places every 250 ms; the latency of a jump is the
-  // time from submitFrame to the end of the first paint whose snapshot has the tool there
+  // the right forceps jumps between two places, each move a random while after the last was shown
   sim::InputFrame frame;
   frame.hand(sim::Hand::Right).tracked = true;
   frame.hand(sim::Hand::Left).tracked = true;
   frame.hand(sim::Hand::Left).position = Eigen::Vector3d(-1.2, 0.0, 0.8);
   const Eigen::Vector3d places[2] = {Eigen::Vector3d(1.2, 0.3, 0.8), Eigen::Vector3d(1.2, -0.3, 0.9)};
   int place = 0;
-  bool pending = false;
+  enum class Move { None, Submitted, Drawn } move = Move::None;
   Clock::time_point movedAt;
-  std::vector<double> latencies;
-  const auto start = Clock::now();
+  std::vector<double> toDrawn, toPresented;
+  const Clock::time_point start = Clock::now();
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> pause(100, 300);  // ms
   QTimer mover;
+  mover.setSingleShot(true);
+  mover.setTimerType(Qt::PreciseTimer);
   QObject::connect(&mover, &QTimer::timeout, &app, [&] {
     place = 1 - place;
     frame.time = std::chrono::duration<double>(Clock::now() - start).count();
     frame.hand(sim::Hand::Right).position = places[place];
+    move = Move::Submitted;
     movedAt = Clock::now();
-    pending = true;
     runner.submitFrame(frame);
   });
 
-  int frames = 0;
-  int stepsAtStart = 0;
-  Clock::time_point measureStart;
+  // the end of the first paintGL that shows the pending move
   QObject::connect(&view, &Viewport::frameDrawn, &app, [&] {
-    if (frames++ == 0) {
-      runner.start();
-      mover.start(250);
-      measureStart = Clock::now();
+    if (move != Move::Submitted || !view.drawnSnapshot()) return;
+    const Eigen::Vector3d shown = view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>();
+    if ((shown - places[place]).norm() > 1e-4) return;
+    toDrawn.push_back(ms(Clock::now() - movedAt));
+    move = Move::Drawn;
+  });
+
+  int presented = 0;
+  int stepsAtStart = 0;
+  int stepsAtEnd = 0;
+  double elapsed = 0.0;
+  bool done = false;
+  Clock::time_point measureStart;
+  const QByteArray loadBefore = loadAverage();
+  QObject::connect(&view, &QOpenGLWidget::frameSwapped, &app, [&] {
+    if (done) return;
+    const Clock::time_point now = Clock::now();
+    if (presented++ == 0) {
+      measureStart = now;
+      if (live) {
+        runner.start();
+        mover.start(pause(random));
+      }
       stepsAtStart = runner.steps();
     }
-    if (pending && view.drawnSnapshot()) {
-      const Eigen::Vector3d shown = view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>();
-      if ((shown - places[place]).norm() < 1e-4) {
-        latencies.push_back(std::chrono::duration<double, std::milli>(Clock::now() - movedAt).count());
-        pending = false;
-      }
+    if (move == Move::Drawn) {
+      toPresented.push_back(ms(now - movedAt));
+      move = Move::None;
+      mover.start(pause(random));
     }
-    if (std::chrono::duration<double>(Clock::now() - measureStart).count() >= seconds) {
-      app.quit();
+    elapsed = std::chrono::duration<double>(now - measureStart).count();
+    if (elapsed >= seconds) {
+      done = true;
+      stepsAtEnd = runner.steps();
+      mover.stop();
+      // queued: QApplication::quit closes every window at once, and from a handler inside the
+      // viewport's repaint that destroyed the native window Qt was still flushing this frame to
+      // (SIGSEGV in QXcbWindow::needsSync)
+      QTimer::singleShot(0, &app, [&runner] {
+        runner.stop();
+        QCoreApplication::quit();
+      });
       return;
     }
-    QTimer::singleShot(0, &view, qOverload<>(&QWidget::update));  // redraw as fast as possible
+    QTimer::singleShot(0, &view, qOverload<>(&QWidget::update));
   });
-  app.exec();
 
-  const double elapsed = std::chrono::duration<double>(Clock::now() - measureStart).count();
-  const int steps = runner.steps() - stepsAtStart;
-  runner.stop();
-  const auto median = [](std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  std::printf("viewport %dx%d: %d frames in %.2f s = %.1f fps (redrawing continuously)\n", width, height,
-              frames - 1, elapsed, (frames - 1) / elapsed);
-  std::printf("simulation: %d steps in %.2f s = %.1f Hz (scene rate %.0f Hz); step time median %.2f ms, "
-              "worst per-second p99 %.2f ms\n",
-              steps, elapsed, steps / elapsed, runner.sceneDef()->step.rateHz, median(medians),
-              p99s.empty() ? 0.0 : *std::max_element(p99s.begin(), p99s.end()));
-  std::printf("tool move -> first frame showing it: median %.1f ms, max %.1f ms over %zu moves\n",
-              median(latencies), latencies.empty() ? 0.0 : *std::max_element(latencies.begin(), latencies.end()),
-              latencies.size());
+  view.show();
+  QApplication::exec();
+
+  const char* mode = live ? "live" : withScene ? "idle (scene loaded, not running)" : "no scene";
+  const int frames = presented - 1;
+  std::printf("case: %s, viewport %dx%d, %d samples requested; load average before: %s, after: %s\n", mode, width,
+              height, samples, loadBefore.constData(), loadAverage().constData());
+  std::printf("viewport: %d frames presented in %.2f s = %.1f fps (redrawing continuously; %d paintGL calls)\n",
+              frames, elapsed, frames / elapsed, view.framesDrawn());
+  if (!live) return 0;
+  const int steps = stepsAtEnd - stepsAtStart;
+  std::printf("simulation: %d steps in %.2f s = %.1f Hz (scene rate %.0f Hz); step time: median of the per-second "
+              "medians %.2f ms, worst per-second p99 %.2f ms\n",
+              steps, elapsed, steps / elapsed, runner.sceneDef()->step.rateHz, percentile(stepMedians, 0.5),
+              stepP99s.empty() ? 0.0 : *std::max_element(stepP99s.begin(), stepP99s.end()));
+  std::printf("tool move -> drawn: median %.1f ms, p95 %.1f ms; -> presented: median %.1f ms, p95 %.1f ms, "
+              "max %.1f ms over %zu moves\n",
+              percentile(toDrawn, 0.5), percentile(toDrawn, 0.95), percentile(toPresented, 0.5),
+              percentile(toPresented, 0.95), percentile(toPresented, 1.0), toPresented.size());
   return 0;
 }
