@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <optional>
@@ -239,7 +240,9 @@ std::variant<Rubric, RubricError> parseRubric(std::string_view text, const std::
 
 std::variant<Rubric, RubricError> loadRubric(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return RubricError{K::FileNotFound, path, 0, 0, {}};
+  // a folder opens as a stream and reads as nothing, which would look like bad JSON
+  std::error_code ec;
+  if (!in || std::filesystem::is_directory(path, ec)) return RubricError{K::FileNotFound, path, 0, 0, {}};
   std::ostringstream text;
   text << in.rdbuf();
   return parseRubric(text.str(), path);
