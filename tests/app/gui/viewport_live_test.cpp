@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <set>
 
 namespace microsim::gui {
@@ -27,6 +28,20 @@ const QString kScene = QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/ana
 Eigen::Vector3d drawnRightForceps(const Viewport& view) {
   return view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>();
 }
+
+// a 320 × 200 viewport on the anastomosis scene, loaded in `mode` with the current default
+// surface format, not yet shown
+struct SceneView {
+  SimulationRunner runner;
+  std::unique_ptr<Viewport> view;
+
+  explicit SceneView(sim::StepMode mode) {
+    EXPECT_TRUE(runner.load(kScene, mode));
+    view = std::make_unique<Viewport>();
+    view->resize(320, 200);
+    view->setRunner(&runner);
+  }
+};
 
 TEST(SurfaceFormat, IsTheCoreProfileTheShadersNeed) {
   const QSurfaceFormat format = microscopeSurfaceFormat();
@@ -40,45 +55,36 @@ TEST(SurfaceFormat, IsTheCoreProfileTheShadersNeed) {
 
 TEST(SurfaceFormat, TheAppsMultisampledFormatDrawsTheScene) {
   useMicroscopeSurfaceFormat();
-  SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
-  {
-    Viewport view;
-    view.resize(320, 200);
-    view.setRunner(&runner);
-    QSignalSpy frames(&view, &Viewport::frameDrawn);
-    view.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
-    ASSERT_TRUE(frames.count() > 0 || frames.wait(10000));
-    EXPECT_TRUE(view.lastError().isEmpty()) << view.lastError().toStdString();
-    const QSurfaceFormat actual = view.context()->format();
-    EXPECT_EQ(actual.profile(), QSurfaceFormat::CoreProfile);
-    EXPECT_GE(actual.majorVersion() * 10 + actual.minorVersion(), 33);
-    // a shaded scene, not a cleared or failed framebuffer
-    const QImage image = view.grabFramebuffer();
-    std::set<QRgb> colours;
-    for (int y = 0; y < image.height(); y += 4)
-      for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
-    EXPECT_GT(colours.size(), 30u);
-  }
-  requestCoreProfile();  // the other GUI tests draw without multisampling
+  SceneView s(sim::StepMode::Deterministic);
+  requestCoreProfile();  // the other GUI tests draw without multisampling; this view keeps its format
+  QSignalSpy frames(s.view.get(), &Viewport::frameDrawn);
+  s.view->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(s.view.get()));
+  ASSERT_TRUE(frames.count() > 0 || frames.wait(10000));
+  EXPECT_TRUE(s.view->lastError().isEmpty()) << s.view->lastError().toStdString();
+  const QSurfaceFormat actual = s.view->context()->format();
+  EXPECT_EQ(actual.profile(), QSurfaceFormat::CoreProfile);
+  EXPECT_GE(actual.majorVersion() * 10 + actual.minorVersion(), 33);
+  // a shaded scene, not a cleared or failed framebuffer
+  const QImage image = s.view->grabFramebuffer();
+  std::set<QRgb> colours;
+  for (int y = 0; y < image.height(); y += 4)
+    for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
+  EXPECT_GT(colours.size(), 30u);
 }
 
 TEST(Viewport, PresentsAToolPoseSubmittedToTheLiveRunner) {
   requestCoreProfile();
-  SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::RealTime));
-  Viewport view;
-  view.resize(320, 200);
-  view.setRunner(&runner);
+  SceneView s(sim::StepMode::RealTime);
+  Viewport& view = *s.view;
   view.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
-  runner.start();
+  s.runner.start();
 
   sim::InputFrame frame;
   frame.hand(sim::Hand::Right).tracked = true;
   frame.hand(sim::Hand::Right).position = Eigen::Vector3d(1.2, -0.3, 0.9);
-  runner.submitFrame(frame);
+  s.runner.submitFrame(frame);
   // each presented frame is checked; the runner's snapshots alone keep the viewport redrawing
   bool shown = false;
   QObject::connect(&view, &QOpenGLWidget::frameSwapped, &view, [&] {
@@ -86,7 +92,7 @@ TEST(Viewport, PresentsAToolPoseSubmittedToTheLiveRunner) {
       shown = true;
   });
   QTRY_VERIFY_WITH_TIMEOUT(shown, 10000);
-  runner.stop();
+  s.runner.stop();
   EXPECT_TRUE(view.lastError().isEmpty()) << view.lastError().toStdString();
 }
 
@@ -95,11 +101,9 @@ TEST(Viewport, AFrameHandlerCanEndTheApplicationLoop) {
   // (inside paintGL) it destroyed the native window Qt was about to flush that frame to
   // (SIGSEGV in QXcbWindow::needsSync), so microsim-view-measure queues it, as here
   requestCoreProfile();
-  SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::RealTime));
-  Viewport view;
-  view.resize(320, 200);
-  view.setRunner(&runner);
+  SceneView s(sim::StepMode::RealTime);
+  Viewport& view = *s.view;
+  SimulationRunner& runner = s.runner;
   int drawn = 0;
   QObject::connect(&view, &Viewport::frameDrawn, &view, [&] {
     if (++drawn == 1) runner.start();
