@@ -17,11 +17,11 @@
 // has composed the widget's framebuffer and returned from swapBuffers) per second of
 // std::chrono::steady_clock, from the first presented frame to the first one past SECONDS.
 //
-// Latency (live only): the right forceps' pose jumps between two places, each move 100–300 ms
-// (uniformly random, fixed seed) after the previous one was presented, so moves fall at random
-// phases of the frame and none is dropped for a slow frame. Start:
-// the steady_clock time just before SimulationRunner::submitFrame is called with the new
-// pose (GUI thread). End, two figures: "drawn" is the end of the first paintGL whose snapshot
+// Latency (live only): a tracker thread of its own (as the OpenIGTLink client has) moves the
+// right forceps between two places, each move 100–300 ms (uniformly random, fixed seed) after
+// the previous one was presented: the moves fall at random phases of the GUI thread's frames,
+// and none is dropped for a slow frame. Start: the steady_clock time just before the tracker
+// thread calls SimulationRunner::submitFrame with the new pose. End, two figures: "drawn" is the end of the first paintGL whose snapshot
 // (Viewport::drawnSnapshot) has the forceps at the new place; "presented" is the frameSwapped
 // that follows that paintGL, i.e. the frame is on the window. Between them: wait for the next
 // 100 Hz step, the step, the snapshot hand-over, the wait for the frame in progress to end,
@@ -41,10 +41,15 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
+#include <optional>
 #include <random>
+#include <thread>
 #include <vector>
 
 using microsim::gui::SimulationRunner;
@@ -68,6 +73,73 @@ QByteArray loadAverage() {
   QFile file(QStringLiteral("/proc/loadavg"));
   return file.open(QIODevice::ReadOnly) ? file.readLine().trimmed() : QByteArrayLiteral("unknown");
 }
+
+// the tracker thread: submits a move, waits until the GUI thread says it was presented, pauses
+// a random 100–300 ms, and moves again
+class Tracker {
+ public:
+  explicit Tracker(SimulationRunner* runner) : runner_(runner) {
+    frame_.hand(sim::Hand::Right).tracked = true;
+    frame_.hand(sim::Hand::Left).tracked = true;
+    frame_.hand(sim::Hand::Left).position = Eigen::Vector3d(-1.2, 0.0, 0.8);
+  }
+  ~Tracker() { stop(); }
+
+  void start() { thread_ = std::thread([this] { run(); }); }
+  void stop() {
+    {
+      const std::lock_guard lock(mutex_);
+      quit_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+
+  /// If a move is waiting to be shown and `shown` is where it went: when it was submitted.
+  std::optional<Clock::time_point> pendingMoveAt(const Eigen::Vector3d& shown) {
+    const std::lock_guard lock(mutex_);
+    if (!pending_ || (shown - places_[place_]).norm() > 1e-4) return std::nullopt;
+    return movedAt_;
+  }
+  /// The pending move is on the window: the next one may follow.
+  void presented() {
+    {
+      const std::lock_guard lock(mutex_);
+      pending_ = false;
+    }
+    wake_.notify_all();
+  }
+
+ private:
+  const std::array<Eigen::Vector3d, 2> places_{Eigen::Vector3d(1.2, 0.3, 0.8), Eigen::Vector3d(1.2, -0.3, 0.9)};  // mm
+
+  void run() {
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> pause(100, 300);  // ms
+    const Clock::time_point start = Clock::now();
+    std::unique_lock lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [this] { return quit_ || !pending_; });
+      if (wake_.wait_for(lock, std::chrono::milliseconds(pause(random)), [this] { return quit_; })) return;
+      place_ = 1 - place_;
+      frame_.time = std::chrono::duration<double>(Clock::now() - start).count();
+      frame_.hand(sim::Hand::Right).position = places_[place_];
+      pending_ = true;
+      movedAt_ = Clock::now();
+      runner_->submitFrame(frame_);
+    }
+  }
+
+  SimulationRunner* runner_;
+  sim::InputFrame frame_;
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool quit_ = false;
+  bool pending_ = false;  // submitted, not yet presented
+  int place_ = 0;
+  Clock::time_point movedAt_;
+};
 
 }  // namespace
 
@@ -118,38 +190,14 @@ int main(int argc, char** argv) {
     stepP99s.push_back(p99);
   });
 
-  // the right forceps jumps between two places, each move a random while after the last was shown
-  sim::InputFrame frame;
-  frame.hand(sim::Hand::Right).tracked = true;
-  frame.hand(sim::Hand::Left).tracked = true;
-  frame.hand(sim::Hand::Left).position = Eigen::Vector3d(-1.2, 0.0, 0.8);
-  const Eigen::Vector3d places[2] = {Eigen::Vector3d(1.2, 0.3, 0.8), Eigen::Vector3d(1.2, -0.3, 0.9)};
-  int place = 0;
-  enum class Move { None, Submitted, Drawn } move = Move::None;
-  Clock::time_point movedAt;
-  std::vector<double> toDrawn, toPresented;
-  const Clock::time_point start = Clock::now();
-  std::mt19937 random(7);
-  std::uniform_int_distribution<int> pause(100, 300);  // ms
-  QTimer mover;
-  mover.setSingleShot(true);
-  mover.setTimerType(Qt::PreciseTimer);
-  QObject::connect(&mover, &QTimer::timeout, &app, [&] {
-    place = 1 - place;
-    frame.time = std::chrono::duration<double>(Clock::now() - start).count();
-    frame.hand(sim::Hand::Right).position = places[place];
-    move = Move::Submitted;
-    movedAt = Clock::now();
-    runner.submitFrame(frame);
-  });
-
   // the end of the first paintGL that shows the pending move
+  Tracker tracker(&runner);
+  std::optional<Clock::time_point> drawnMoveAt;
+  std::vector<double> toDrawn, toPresented;
   QObject::connect(&view, &Viewport::frameDrawn, &app, [&] {
-    if (move != Move::Submitted || !view.drawnSnapshot()) return;
-    const Eigen::Vector3d shown = view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>();
-    if ((shown - places[place]).norm() > 1e-4) return;
-    toDrawn.push_back(ms(Clock::now() - movedAt));
-    move = Move::Drawn;
+    if (drawnMoveAt || !view.drawnSnapshot()) return;
+    drawnMoveAt = tracker.pendingMoveAt(view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>());
+    if (drawnMoveAt) toDrawn.push_back(ms(Clock::now() - *drawnMoveAt));
   });
 
   int presented = 0;
@@ -166,20 +214,20 @@ int main(int argc, char** argv) {
       measureStart = now;
       if (live) {
         runner.start();
-        mover.start(pause(random));
+        tracker.start();
       }
       stepsAtStart = runner.steps();
     }
-    if (move == Move::Drawn) {
-      toPresented.push_back(ms(now - movedAt));
-      move = Move::None;
-      mover.start(pause(random));
+    if (drawnMoveAt) {
+      toPresented.push_back(ms(now - *drawnMoveAt));
+      drawnMoveAt.reset();
+      tracker.presented();
     }
     elapsed = std::chrono::duration<double>(now - measureStart).count();
     if (elapsed >= seconds) {
       done = true;
       stepsAtEnd = runner.steps();
-      mover.stop();
+      tracker.stop();
       // queued: QApplication::quit closes every window at once, and from a handler inside the
       // viewport's repaint that destroyed the native window Qt was still flushing this frame to
       // (SIGSEGV in QXcbWindow::needsSync)
