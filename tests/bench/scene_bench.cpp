@@ -9,6 +9,8 @@
 // targets: p99 ≤ 5 ms for the default scene, ≤ 10 ms for the fine one.
 #include "scene_bench.h"
 
+#include "bench_clock.h"
+
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/stitch_script.h"
@@ -16,7 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <ctime>
 #include <string>
 #include <variant>
 #include <vector>
@@ -27,19 +28,6 @@ namespace {
 
 const std::string kRoot = MICROSIM_SOURCE_DIR;
 
-double quantileMs(std::vector<double> s, double q) {
-  if (s.empty()) return 0.0;
-  std::sort(s.begin(), s.end());
-  const std::size_t i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(s.size()))) - 1;
-  return 1e3 * s[std::min(i, s.size() - 1)];
-}
-
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 void runCase(const std::string& name, const std::string& sceneFile, bool shipped, sim::StepMode mode,
              BenchReport& report) {
   sim::SceneDefLoad load = sim::loadSceneDef(kRoot + "/resources/scenes/" + sceneFile);
@@ -49,7 +37,7 @@ void runCase(const std::string& name, const std::string& sceneFile, bool shipped
   if (!shipped || !sim::readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok())
     rec = sim::scriptedStitch(def);
   const int nodes = def.tissue.model.nodeCount();
-  sim::Scene scene(std::move(def), mode, threadCpuSeconds);
+  sim::Scene scene(std::move(def), mode, cpuSeconds);
 
   std::array<std::vector<double>, 5> t;
   for (const sim::InputFrame& f : rec.frames) {

@@ -10,6 +10,8 @@
 // same pierce count as the first (deterministic replays over a whole session).
 #include "soak_bench.h"
 
+#include "bench_clock.h"
+
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 
@@ -37,13 +39,6 @@ double residentMiB() {
   return static_cast<double>(pagesResident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
-double quantileMs(std::vector<double> s, double q) {
-  if (s.empty()) return 0.0;
-  std::sort(s.begin(), s.end());
-  const std::size_t i = static_cast<std::size_t>(std::ceil(q * static_cast<double>(s.size()))) - 1;
-  return 1e3 * s[std::min(i, s.size() - 1)];
-}
-
 bool finiteState(const sim::Scene& scene) {
   if (!scene.tissueState().x.allFinite() || !scene.tissueState().v.allFinite()) return false;
   const auto* suture = scene.sutureState();
@@ -62,7 +57,7 @@ BenchReport runSoak(const BenchOptions& options) {
     return report;
   }
   const sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
-  auto scene = std::make_unique<sim::Scene>(def);
+  auto scene = std::make_unique<sim::Scene>(def, sim::StepMode::Deterministic, cpuSeconds);
 
   const double minutes = options.quick ? 3.0 : 30.0;
   const int stepsPerMinute = static_cast<int>(std::lround(60.0 / scene->dt()));
@@ -102,7 +97,7 @@ BenchReport runSoak(const BenchOptions& options) {
       } else if (scene->hash() != firstHash || scene->pierces().size() != firstPierces) {
         ++attemptsDiffering;
       }
-      scene = std::make_unique<sim::Scene>(def);
+      scene = std::make_unique<sim::Scene>(def, sim::StepMode::Deterministic, cpuSeconds);
     }
     const sim::StepReport r = scene->step(rec.frames[i]);
     if (r.inputRejected) ++rejected;

@@ -19,10 +19,11 @@
 // over every frame.
 #include "suture_bench.h"
 
+#include "bench_clock.h"
+
 #include "microsim/sim/suture/suture_solver.h"
 
 #include <cmath>
-#include <ctime>
 #include <numbers>
 #include <string>
 
@@ -85,13 +86,6 @@ Points sagLayout(int links, double link, double slack) {
   return x;
 }
 
-// CPU time of the calling thread (s): on a shared machine wall-clock counts other processes
-double threadSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 // the common hand path at time t (s): amplitude kHand, one cycle per kPeriod
 Vec3 handPath(double t) {
   const double phase = 2.0 * std::numbers::pi * t / kPeriod;
@@ -148,9 +142,9 @@ SutureBenchMeasure measureSutureCase(const std::string& solverName, Case c, int 
     }
     if (c == Case::Contacts) world.capsules[0] = jaw(jawAt + handPath(t));
     const std::span<const Grip> held(grips, c == Case::OneGrip ? 1 : 2);
-    const double start = threadSeconds();
+    const double start = cpuSeconds();
     const SutureStepReport r = solver->step(model, state, held, world, stepParams);
-    seconds += threadSeconds() - start;
+    seconds += cpuSeconds() - start;
     m.maxStretch = std::max(m.maxStretch, r.maxStretch);
     for (const SutureEvent& e : r.events) m.breaks += e.kind == SutureEventKind::Break ? 1 : 0;
   }

@@ -1,23 +1,11 @@
 #include "tissue_bench_util.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <ctime>
 
 namespace microsim::bench {
 
 using namespace microsim::sim;
-
-double nowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double cpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 SpringState referenceEquilibrium(const SpringModel& model, const SpringState& start,
                                  const SpringControls& controls) {

@@ -6,6 +6,7 @@
 // solver, relative residual 1e-10), max and mean over all nodes, divided by the size of
 // the control displacement of the cycle being solved, in %.
 
+#include "bench_clock.h"
 #include "bench_report.h"
 
 #include "microsim/sim/solve/solver.h"
@@ -73,10 +74,5 @@ ErrorCurve sweepErrorAgainstTime(const PullCase& c, const std::string& solverNam
 /// The parameters each solver runs with in the benchmarks (documented in the README):
 /// qss as the paper, rk4 and implicit with damping that settles the box fastest.
 sim::SolverParams benchParams(const std::string& solverName);
-
-/// Seconds of wall clock since an arbitrary start.
-double nowSeconds();
-/// CPU seconds the calling thread has used.
-double cpuSeconds();
 
 }  // namespace microsim::bench
