@@ -20,13 +20,15 @@
 // Latency (live only): a tracker thread of its own (as the OpenIGTLink client has) moves the
 // right forceps between two places, each move 100–300 ms (uniformly random, fixed seed) after
 // the previous one was presented: the moves fall at random phases of the GUI thread's frames,
-// and none is dropped for a slow frame. Start: the steady_clock time just before the tracker
-// thread calls SimulationRunner::submitFrame with the new pose. End, two figures: "drawn" is the end of the first paintGL whose snapshot
-// (Viewport::drawnSnapshot) has the forceps at the new place; "presented" is the frameSwapped
-// that follows that paintGL, i.e. the frame is on the window. Between them: wait for the next
-// 100 Hz step, the step, the snapshot hand-over, the wait for the frame in progress to end,
-// the frame that shows it. ("drawn" only means the commands were issued: llvmpipe may finish
-// rasterising at the flush.)
+// and none is dropped for a slow frame. Clock: std::chrono::steady_clock throughout.
+//   start      just before the tracker thread calls SimulationRunner::submitFrame(new pose);
+//   drawn      the end of the first paintGL whose snapshot (Viewport::drawnSnapshot) has the
+//              right forceps at the new place (within 1e-4 mm);
+//   presented  the frameSwapped that follows that paintGL: the frame is on the window.
+// In between: the wait for the next 100 Hz step, the step, the snapshot hand-over, the rest of
+// the frame in progress, and the frame that shows the move. "drawn" only means the GL commands
+// were issued; llvmpipe does most of its rasterising when the frame is flushed, so
+// "presented" is the figure.
 //
 // The machine's load average (/proc/loadavg) is printed before and after, since the figures
 // depend on what else runs. A measurement, never a test: nothing is asserted, and it is not
