@@ -5,6 +5,8 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 bash scripts/install-deps.sh
+# shellcheck source=scripts/ccache-env.sh
+source scripts/ccache-env.sh
 preset="${MICROSIM_PRESET:-release}"
 cmake --preset "$preset"
 cmake --build --preset "$preset" -j "$(nproc)"

@@ -17,6 +17,9 @@ packages=(
   libopenigtlink-dev
   # tests: GoogleTest, a virtual display for GUI tests, a PostgreSQL server for the storage tests
   libgtest-dev libgmock-dev xvfb xauth postgresql
+  # hardening (scripts/hardening.sh): clang with its sanitizer and libFuzzer runtimes, the
+  # symbolizer for their stack traces, clang-tidy
+  clang-14 libclang-rt-14-dev llvm-14 clang-tidy-14
 )
 
 missing=()
