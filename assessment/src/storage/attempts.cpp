@@ -55,7 +55,7 @@ std::vector<std::pair<const char*, double>> pierceValues(const PierceMetrics& p)
 }
 
 // writes the score's rows inside the caller's transaction; the driver's text on failure
-QString insertScore(QSqlDatabase db, qint64 attemptId, const AttemptScore& score,
+QString insertScore(const QSqlDatabase& db, qint64 attemptId, const AttemptScore& score,
                     const QByteArray& recording) {
   QSqlQuery q(db);
   QStringList neverEvents;

@@ -94,7 +94,7 @@ bool HistoryDatabase::isUrl(const QString& location) {
 DatabaseStatus HistoryDatabase::open(const QString& location) {
   close();
   // the connection is removed only once the opening functions' handles to it are gone
-  const DatabaseStatus status = isUrl(location) ? openPostgres(location) : openSqlite(location);
+  DatabaseStatus status = isUrl(location) ? openPostgres(location) : openSqlite(location);
   if (!status.ok()) close();
   return status;
 }
@@ -111,19 +111,15 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
   QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connectionName_);
   db.setDatabaseName(info.absoluteFilePath());
   db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=2000"));
-  if (!db.open()) {
-    const DatabaseStatus status = failure(classify(db.lastError()), db.lastError().text());
-    return status;
-  }
+  if (!db.open())
+    return failure(classify(db.lastError()), db.lastError().text());
 
   // the first statements touch the file: a corrupt or foreign file fails here
   QSqlQuery q(db);
   for (const char* statement : {"PRAGMA foreign_keys = ON", "PRAGMA journal_mode = WAL",
                                 "PRAGMA synchronous = NORMAL", "SELECT count(*) FROM sqlite_master"}) {
-    if (!q.exec(QString::fromLatin1(statement))) {
-      const DatabaseStatus status = failure(classify(q.lastError()), q.lastError().text());
-      return status;
-    }
+    if (!q.exec(QString::fromLatin1(statement)))
+      return failure(classify(q.lastError()), q.lastError().text());
   }
   q.finish();  // an open read would lock the tables a migration drops
   session_ = QStringLiteral("%1@%2").arg(QCoreApplication::applicationPid()).arg(QSysInfo::machineHostName());
@@ -147,15 +143,11 @@ DatabaseStatus HistoryDatabase::openPostgres(const QString& location) {
   db.setUserName(url.userName(QUrl::FullyDecoded));
   db.setPassword(url.password(QUrl::FullyDecoded));
   db.setConnectOptions(QStringLiteral("connect_timeout=10"));
-  if (!db.open()) {
-    const DatabaseStatus status = failure(DatabaseError::CannotOpen, db.lastError().text());
-    return status;
-  }
+  if (!db.open())
+    return failure(DatabaseError::CannotOpen, db.lastError().text());
   QSqlQuery q(db);
-  if (!q.exec(QStringLiteral("SELECT pg_backend_pid()")) || !q.next()) {
-    const DatabaseStatus status = failure(DatabaseError::CannotOpen, q.lastError().text());
-    return status;
-  }
+  if (!q.exec(QStringLiteral("SELECT pg_backend_pid()")) || !q.next())
+    return failure(DatabaseError::CannotOpen, q.lastError().text());
   session_ = QStringLiteral("pg:%1").arg(q.value(0).toLongLong());
   q.finish();
   path_ = url.toString(QUrl::RemovePassword);

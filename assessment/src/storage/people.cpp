@@ -67,7 +67,7 @@ QStringList HistoryDatabase::groups() {
 namespace {
 
 // the person's id, or 0 when the name is free; nullopt on a driver error
-std::optional<qint64> idByName(QSqlDatabase db, const QString& name) {
+std::optional<qint64> idByName(const QSqlDatabase& db, const QString& name) {
   QSqlQuery q(db);
   q.prepare(QStringLiteral("SELECT id FROM trainees WHERE name = ?"));
   q.addBindValue(name);
@@ -76,7 +76,7 @@ std::optional<qint64> idByName(QSqlDatabase db, const QString& name) {
 }
 
 // inserts a person (and their group when new) inside the caller's transaction
-std::optional<qint64> insertPerson(QSqlDatabase db, const QString& name, Role role,
+std::optional<qint64> insertPerson(const QSqlDatabase& db, const QString& name, Role role,
                                    const QString& group, QString* error) {
   QVariant groupId{QMetaType(QMetaType::LongLong)};  // braces: clang reads parentheses as a function declaration
   QSqlQuery q(db);
