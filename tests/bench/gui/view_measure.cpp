@@ -33,6 +33,7 @@
 // The machine's load average (/proc/loadavg) is printed before and after, since the figures
 // depend on what else runs. A measurement, never a test: nothing is asserted, and it is not
 // registered with CTest.
+#include "bench_clock.h"
 #include "gui/render/surface_format.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
@@ -54,6 +55,7 @@
 #include <thread>
 #include <vector>
 
+using microsim::bench::quantileMs;
 using microsim::gui::SimulationRunner;
 using microsim::gui::Viewport;
 namespace sim = microsim::sim;
@@ -61,15 +63,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-// nearest-rank percentile (0 < p ≤ 1) of unsorted values; 0 when empty
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size())));
-  return v[std::clamp<std::size_t>(rank, 1, v.size()) - 1];
-}
+double toSeconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 QByteArray loadAverage() {
   QFile file(QStringLiteral("/proc/loadavg"));
@@ -124,7 +118,7 @@ class Tracker {
       wake_.wait(lock, [this] { return quit_ || !pending_; });
       if (wake_.wait_for(lock, std::chrono::milliseconds(pause(random)), [this] { return quit_; })) return;
       place_ = 1 - place_;
-      frame_.time = std::chrono::duration<double>(Clock::now() - start).count();
+      frame_.time = toSeconds(Clock::now() - start);
       frame_.hand(sim::Hand::Right).position = places_[place_];
       pending_ = true;
       movedAt_ = Clock::now();
@@ -188,18 +182,18 @@ int main(int argc, char** argv) {
 
   std::vector<double> stepMedians, stepP99s;
   QObject::connect(&runner, &SimulationRunner::stepTimes, &app, [&](double median, double p99) {
-    stepMedians.push_back(median);
+    stepMedians.push_back(median / 1e3);
     stepP99s.push_back(p99);
   });
 
   // the end of the first paintGL that shows the pending move
   Tracker tracker(&runner);
   std::optional<Clock::time_point> drawnMoveAt;
-  std::vector<double> toDrawn, toPresented;
+  std::vector<double> toDrawn, toPresented;  // s
   QObject::connect(&view, &Viewport::frameDrawn, &app, [&] {
     if (drawnMoveAt || !view.drawnSnapshot()) return;
     drawnMoveAt = tracker.pendingMoveAt(view.drawnSnapshot()->forceps[1].pose.block<3, 1>(0, 3).cast<double>());
-    if (drawnMoveAt) toDrawn.push_back(ms(Clock::now() - *drawnMoveAt));
+    if (drawnMoveAt) toDrawn.push_back(toSeconds(Clock::now() - *drawnMoveAt));
   });
 
   int presented = 0;
@@ -221,11 +215,11 @@ int main(int argc, char** argv) {
       stepsAtStart = runner.steps();
     }
     if (drawnMoveAt) {
-      toPresented.push_back(ms(now - *drawnMoveAt));
+      toPresented.push_back(toSeconds(now - *drawnMoveAt));
       drawnMoveAt.reset();
       tracker.presented();
     }
-    elapsed = std::chrono::duration<double>(now - measureStart).count();
+    elapsed = toSeconds(now - measureStart);
     if (elapsed >= seconds) {
       done = true;
       stepsAtEnd = runner.steps();
@@ -255,11 +249,11 @@ int main(int argc, char** argv) {
   const int steps = stepsAtEnd - stepsAtStart;
   std::printf("simulation: %d steps in %.2f s = %.1f Hz (scene rate %.0f Hz); step time: median of the per-second "
               "medians %.2f ms, worst per-second p99 %.2f ms\n",
-              steps, elapsed, steps / elapsed, runner.sceneDef()->step.rateHz, percentile(stepMedians, 0.5),
+              steps, elapsed, steps / elapsed, runner.sceneDef()->step.rateHz, quantileMs(stepMedians, 0.5),
               stepP99s.empty() ? 0.0 : *std::max_element(stepP99s.begin(), stepP99s.end()));
   std::printf("tool move -> drawn: median %.1f ms, p95 %.1f ms; -> presented: median %.1f ms, p95 %.1f ms, "
               "max %.1f ms over %zu moves\n",
-              percentile(toDrawn, 0.5), percentile(toDrawn, 0.95), percentile(toPresented, 0.5),
-              percentile(toPresented, 0.95), percentile(toPresented, 1.0), toPresented.size());
+              quantileMs(toDrawn, 0.5), quantileMs(toDrawn, 0.95), quantileMs(toPresented, 0.5),
+              quantileMs(toPresented, 0.95), quantileMs(toPresented, 1.0), toPresented.size());
   return 0;
 }
