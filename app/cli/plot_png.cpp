@@ -74,13 +74,17 @@ QString tickLabel(double v) { return QString::number(v, 'g', 3); }
 std::vector<double> ticks(const Axis& axis) {
   std::vector<double> out;
   if (axis.log) {
-    for (double v = axis.lo; v <= axis.hi * 1.0001; v *= 10.0) out.push_back(v);
+    const auto decades = static_cast<int>(std::floor(std::log10(axis.hi * 1.0001 / axis.lo)));
+    for (int k = 0; k <= decades; ++k) out.push_back(axis.lo * std::pow(10.0, k));
     return out;
   }
   const double raw = (axis.hi - axis.lo) / 6.0;
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   const double step = raw / magnitude < 2.0 ? 2.0 * magnitude : raw / magnitude < 5.0 ? 5.0 * magnitude : 10.0 * magnitude;
-  for (double v = std::ceil(axis.lo / step) * step; v <= axis.hi; v += step) out.push_back(v);
+  const auto last = std::lround(std::floor(axis.hi / step));
+  for (auto k = std::lround(std::ceil(axis.lo / step)); k <= last; ++k) {
+    out.push_back(static_cast<double>(k) * step);
+  }
   return out;
 }
 

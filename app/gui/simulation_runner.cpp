@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <utility>
 
 namespace microsim::gui {
@@ -17,7 +18,7 @@ std::pair<double, double> medianAndP99(std::vector<double>& ms) {
   if (ms.empty()) return {0.0, 0.0};
   std::sort(ms.begin(), ms.end());
   const auto at = [&](double q) {
-    const auto i = static_cast<std::size_t>(q * static_cast<double>(ms.size() - 1) + 0.5);
+    const auto i = static_cast<std::size_t>(std::lround(q * static_cast<double>(ms.size() - 1)));
     return ms[std::min(i, ms.size() - 1)];
   };
   return {at(0.5), at(0.99)};

@@ -188,7 +188,7 @@ void Viewport::loadStaticGeometry() {
   for (const sim::SceneVessel& v : def.vessels) {
     for (int t = v.innerSurface.begin; t < v.innerSurface.end; ++t)
       for (int i : triangles[static_cast<std::size_t>(t)]) {
-        const auto k = static_cast<std::size_t>(3 * i);
+        const auto k = 3 * static_cast<std::size_t>(i);
         tissueColours_[k] = kVesselLumen.x();
         tissueColours_[k + 1] = kVesselLumen.y();
         tissueColours_[k + 2] = kVesselLumen.z();
@@ -383,7 +383,7 @@ void Viewport::paintGL() {
 
   const QRect full(0, 0, width(), height());
   switch (effectiveStereoMode()) {
-    case StereoMode::Mono:
+    case StereoMode::Mono:  // NOLINT(bugprone-branch-clone): QuadBuffer differs from Qt 6.5 on
       drawEye(Eye::Centre, full);
       break;
     case StereoMode::QuadBuffer:

@@ -14,7 +14,7 @@ QStringList availableLanguages() {
 QString chooseLanguage(const QString& setting, const QLocale& system) {
   const QStringList shipped = availableLanguages();
   if (shipped.contains(setting)) return setting;
-  const QString systemLanguage = QLocale::languageToCode(system.language());
+  QString systemLanguage = QLocale::languageToCode(system.language());
   if (shipped.contains(systemLanguage)) return systemLanguage;
   return QStringLiteral("en");
 }

@@ -209,7 +209,8 @@ IgtlClient::IgtlClient(IgtlClientConfig config, QObject* parent)
   thread_.setObjectName(QStringLiteral("igtl-client"));
 }
 
-IgtlClient::~IgtlClient() { stop(); }
+// qualified: a destructor cannot dispatch to an override, say so
+IgtlClient::~IgtlClient() { IgtlClient::stop(); }
 
 void IgtlClient::start() {
   if (worker_ != nullptr) return;

@@ -189,7 +189,7 @@ void IgtlDecoder::decodeBody(const std::uint8_t* headerBytes, const std::uint8_t
       return;
     }
     std::vector<igtl_float64> values(sh.larray);
-    std::memcpy(values.data(), body + IGTL_SENSOR_HEADER_SIZE, 8u * sh.larray);
+    std::memcpy(values.data(), body + IGTL_SENSOR_HEADER_SIZE, std::size_t{8} * sh.larray);
     igtl_sensor_convert_byte_order(&sh, values.data());
     out.add(ChannelValue{device, time, values.front()});
     return;

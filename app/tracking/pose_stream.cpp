@@ -152,7 +152,7 @@ PoseStreamStatus PoseStreamWriter::open(const QString& path) {
 
 PoseStreamStatus PoseStreamWriter::append(const StreamSample& sample) {
   if (!file_.isOpen()) return {PoseStreamError::CannotWrite, -1, {}};
-  const PoseStreamStatus s = writeLine(sampleLine(sample, first_) + '\n');
+  PoseStreamStatus s = writeLine(sampleLine(sample, first_) + '\n');
   first_ = false;
   return s;
 }

@@ -36,7 +36,8 @@ ReplaySource::ReplaySource(std::vector<sim::InputFrame> frames, ReplayConfig con
   rawStream_ = false;
 }
 
-ReplaySource::~ReplaySource() { stop(); }
+// qualified: a destructor cannot dispatch to an override, say so
+ReplaySource::~ReplaySource() { ReplaySource::stop(); }
 
 std::size_t ReplaySource::sampleCount() const { return rawStream_ ? stream_.samples.size() : frames_.size(); }
 

@@ -6,6 +6,15 @@
 
 namespace microsim::gui {
 
+namespace {
+
+// GL takes a vertex attribute's byte offset into the bound buffer as a pointer
+const void* bufferOffset(std::size_t bytes) {
+  return reinterpret_cast<const void*>(bytes);  // NOLINT(performance-no-int-to-ptr): GL's API
+}
+
+}  // namespace
+
 bool GpuMesh::create() {
   if (vao_.isCreated()) return true;
   if (!vao_.create() || !vertices_.create() || !colours_.create() || !indices_.create()) return false;
@@ -34,10 +43,10 @@ void GpuMesh::upload(QOpenGLExtraFunctions& gl, const ShadedMesh& mesh, bool ind
   vertices_.write(0, mesh.vertices.data(), bytes);
   gl.glEnableVertexAttribArray(0);
   gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ShadedVertex),
-                           reinterpret_cast<const void*>(offsetof(ShadedVertex, position)));
+                           bufferOffset(offsetof(ShadedVertex, position)));
   gl.glEnableVertexAttribArray(1);
   gl.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ShadedVertex),
-                           reinterpret_cast<const void*>(offsetof(ShadedVertex, normal)));
+                           bufferOffset(offsetof(ShadedVertex, normal)));
   if (indices || !haveIndices_) {
     indices_.bind();
     indices_.allocate(mesh.indices.data(), static_cast<int>(mesh.indices.size() * sizeof(std::uint32_t)));

@@ -11,7 +11,7 @@ namespace microsim::gui {
 namespace {
 
 QVector3D node(const std::vector<float>& xyz, int i) {
-  const auto k = static_cast<std::size_t>(3 * i);
+  const auto k = 3 * static_cast<std::size_t>(i);
   return {xyz[k], xyz[k + 1], xyz[k + 2]};
 }
 
@@ -53,7 +53,7 @@ void cap(ShadedMesh& mesh, const QVector3D& centre, const QVector3D& normal, std
 void appendRun(const std::vector<float>& xyz, int a, int b, const TubeStyle& style, ShadedMesh& mesh) {
   const int sub = std::max(1, style.subdivisions);
   std::vector<QVector3D> path;
-  path.reserve(static_cast<std::size_t>((b - a) * sub + 1));
+  path.reserve(static_cast<std::size_t>(b - a) * static_cast<std::size_t>(sub) + 1);
   for (int i = a; i < b; ++i) {
     const QVector3D p0 = node(xyz, std::max(a, i - 1));
     const QVector3D p1 = node(xyz, i);

@@ -127,6 +127,7 @@ std::vector<PierceRow> pierceRows(const QList<assessment::StoredPierceValue>& va
     row.values.insert(v.key, v.value);
   }
   std::vector<PierceRow> rows;
+  rows.reserve(byPierce.size());
   for (auto& [index, row] : byPierce) rows.push_back(std::move(row));
   return rows;
 }

@@ -107,7 +107,7 @@ QString ReviewText::pierceValueName(const QString& key) {
 
 QString ReviewText::value(double value, const QString& unit, int decimals) {
   if (std::isnan(value)) return QStringLiteral("–");
-  const QString number = QLocale().toString(value, 'f', decimals);
+  QString number = QLocale().toString(value, 'f', decimals);
   const QString symbol = unitSymbol(unit);
   if (symbol.isEmpty()) return number;
   if (symbol == QStringLiteral("°")) return number + symbol;

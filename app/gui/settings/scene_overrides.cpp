@@ -71,7 +71,7 @@ QString applySolverOverride(const QString& scenePath, const SolverOverride& over
     if (error) *error = folder;
     return {};
   }
-  const QString path = QDir(folder).filePath(name);
+  QString path = QDir(folder).filePath(name);
   QFile out(path);
   if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size()) {
     if (error) *error = out.errorString();
