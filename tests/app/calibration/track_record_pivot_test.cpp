@@ -33,6 +33,7 @@ TEST(TrackRecord, RecordedStreamCalibratesAndReplays) {
     for (std::size_t i = 0; i < sent.samples.size(); ++i) {
       const auto& p = std::get<tracking::RawPose>(sent.samples[i]);
       s.send(microsim::testing::transformMessage(p.device, p.matrix, p.time));
+      // NOLINTNEXTLINE(bugprone-integer-division): the grip steps up once every 50 poses
       if (i % 50 == 0) s.send(microsim::testing::sensorMessage("Grip", 0.1 * static_cast<double>(i / 50), p.time));
     }
     s.send(microsim::testing::transformMessage("Reference", microsim::testing::floatPose(0, {1, 0, 0}, {0, 0, 0}), 100.0));

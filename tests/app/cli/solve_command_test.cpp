@@ -16,7 +16,7 @@ using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile f(path);
   EXPECT_TRUE(f.open(QIODevice::WriteOnly));
   f.write(text);

@@ -32,7 +32,7 @@ class DiskFull : public ::testing::Test {
 
   // a history with a trainee, an instructor and one begun attempt
   QString makeHistory() {
-    const QString path = dir_.filePath(QStringLiteral("history.sqlite"));
+    QString path = dir_.filePath(QStringLiteral("history.sqlite"));
     HistoryDatabase db;
     EXPECT_TRUE(db.open(path).ok());
     db.setPasswordIterations(1000);

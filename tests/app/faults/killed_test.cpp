@@ -46,6 +46,7 @@ std::size_t samplesIn(const QString& path) {
 TEST(Killed, TrackRecordKeepsEveryReceivedSampleReadableAsTruncated) {
   constexpr int kPoses = 60;
   std::vector<Eigen::Matrix4d> sent;
+  sent.reserve(kPoses);
   for (int i = 0; i < kPoses; ++i)
     sent.push_back(microsim::testing::floatPose(0.01 * i, {0, 0, 1}, {1.0 * i, 2.0, -3.0}));
   std::promise<void> killed;
