@@ -177,7 +177,7 @@ TEST_F(ReviewPageTest, InstructorCsvRowsMatchTheDatabase) {
   const QList<AttemptSummary> stored = history_.attempts(instructor);
   ASSERT_EQ(stored.size(), 6);
   ASSERT_EQ(records.size(), stored.size() + 1);
-  const QStringList header = records[0];
+  const QStringList& header = records[0];
   const auto column = [&](const char* name) { return header.indexOf(QString::fromLatin1(name)); };
   for (int i = 0; i < stored.size(); ++i) {
     const QStringList& row = records[i + 1];

@@ -108,7 +108,7 @@ TEST(Viewport, DrawsTheSutureAsATubeWhereTheSnapshotHasIt) {
   int visible = 0;
   int found = 0;
   for (int i = s->needleNodes + 2; i < nodes; i += 3) {
-    const auto k = static_cast<std::size_t>(3 * i);
+    const auto k = 3 * static_cast<std::size_t>(i);
     const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
     if (!p) continue;
     ++visible;

@@ -45,7 +45,7 @@ LessonError errorOf(const QByteArray& json) {
   const auto result = loadLesson(f.path);
   EXPECT_TRUE(std::holds_alternative<LessonError>(result)) << json.toStdString();
   if (!std::holds_alternative<LessonError>(result)) return {};
-  const LessonError e = std::get<LessonError>(result);
+  LessonError e = std::get<LessonError>(result);
   EXPECT_EQ(e.file, f.path);
   return e;
 }

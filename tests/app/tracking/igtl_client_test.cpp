@@ -45,12 +45,14 @@ TEST(IgtlClient, ReceivesPosesExactlyRefusesGarbageAndSurvivesADisconnect) {
 
   // what the server will send: a slow walk of the left tool, the right tool, a grip value
   std::vector<RawPose> expected;
+  expected.reserve(6);
   for (int i = 0; i < 5; ++i)
     expected.push_back({"Left", igtlTime(10.0 + 0.01 * i), floatPose(0.1 * i, {0, 0, 1}, {1.0 * i, 2, 3}), true});
   const Eigen::Matrix4d right = floatPose(-0.5, {1, 1, 0}, {-20, 5.5, 30});
   expected.push_back({"Right", igtlTime(10.05), right, true});
   const RawPose lastLeft{"Left", igtlTime(10.2), floatPose(0.5, {0, 0, 1}, {6, 2, 3}), true};
   std::vector<RawPose> afterReconnect;
+  afterReconnect.reserve(3);
   for (int i = 0; i < 3; ++i)
     afterReconnect.push_back({"Left", igtlTime(0.5 + 0.01 * i), floatPose(0.0, {0, 0, 1}, {7.0 + i, 2, 3}), true});
 
