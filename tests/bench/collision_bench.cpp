@@ -20,7 +20,6 @@ namespace {
 
 using microsim::sim::SpringModel;
 using microsim::sim::collide::AabbTree;
-using microsim::sim::collide::BvhTree;
 using microsim::sim::collide::FeaturePair;
 using microsim::sim::collide::Points;
 using microsim::sim::collide::SphereTree;

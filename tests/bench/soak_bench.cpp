@@ -104,6 +104,7 @@ BenchReport runSoak(const BenchOptions& options) {
     minute.push_back(r.times.total);
     all.push_back(r.times.total);
     if ((k + 1) % stepsPerMinute == 0) {
+      // NOLINTNEXTLINE(bugprone-integer-division): whole simulated minutes
       const double m = static_cast<double>((k + 1) / stepsPerMinute);
       if (!finiteState(*scene)) ++nonFinite;
       const double mib = residentMiB();

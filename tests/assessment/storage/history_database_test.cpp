@@ -10,7 +10,7 @@
 namespace microsim::assessment {
 namespace {
 
-QString tablesOf(QSqlDatabase db) {
+QString tablesOf(const QSqlDatabase& db) {
   QSqlQuery q(db);
   q.exec(QStringLiteral("SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY name"));
   QStringList names;

@@ -26,7 +26,7 @@ void write(const QString& path, const QByteArray& bytes) {
 
 // a history with one trainee and one finished attempt; returns the file's path
 QString makeHistory(const QTemporaryDir& dir, const QString& name, const QString& trainee) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   HistoryDatabase db;
   EXPECT_TRUE(db.open(path).ok());
   const qint64 id = db.addTrainee(trainee).value_or(0);
