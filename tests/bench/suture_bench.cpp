@@ -171,7 +171,11 @@ BenchReport runSuture(const BenchOptions& options) {
       const std::string name = std::string(caseName(c)) + ", " + std::to_string(n) + " links";
       const auto row = [&](const std::string& solver, const char* metric, double value,
                            const char* unit, std::optional<double> peer) {
-        BenchRow r{"suture", name + " [" + solver + "]", metric, value, unit, std::nullopt, peer,
+        std::string label = name;
+        label += " [";
+        label += solver;
+        label += "]";
+        BenchRow r{"suture", label, metric, value, unit, std::nullopt, peer,
                    std::nullopt};
         if (peer && *peer > 0.0) r.ratio = value / *peer;
         report.rows.push_back(r);

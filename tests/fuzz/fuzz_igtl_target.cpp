@@ -14,7 +14,9 @@ bool samePoses(const std::vector<tracking::RawPose>& a, const std::vector<tracki
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (a[i].device != b[i].device || a[i].hasRotation != b[i].hasRotation) return false;
+    // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison): bit-wise on purpose (see above)
     if (std::memcmp(&a[i].time, &b[i].time, sizeof(double)) != 0) return false;
+    // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison): bit-wise on purpose (see above)
     if (std::memcmp(a[i].matrix.data(), b[i].matrix.data(), sizeof(double) * 16) != 0) return false;
   }
   return true;

@@ -161,9 +161,18 @@ int main(int argc, char** argv) {
                                         : QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
   int width = 1280;
   int height = 800;
-  if (args.size() > 2 && std::sscanf(qPrintable(args[2]), "%dx%d", &width, &height) != 2) {
-    std::fprintf(stderr, "size must be WxH, not %s\n", qPrintable(args[2]));
-    return 2;
+  if (args.size() > 2) {
+    const QStringList wh = args[2].split(QLatin1Char('x'));
+    bool okWidth = false;
+    bool okHeight = false;
+    if (wh.size() == 2) {
+      width = wh[0].toInt(&okWidth);
+      height = wh[1].toInt(&okHeight);
+    }
+    if (!okWidth || !okHeight || width <= 0 || height <= 0) {
+      std::fprintf(stderr, "size must be WxH, not %s\n", qPrintable(args[2]));
+      return 2;
+    }
   }
   const int samples = parser.value(samplesOption).toInt();
   microsim::gui::useMicroscopeSurfaceFormat(samples);

@@ -107,6 +107,7 @@ TYPED_TEST(TreeTest, MaintenanceRefitsExactlyTheAncestorsOfDeformedLeaves) {
     // maintain: the count is the deformed leaves plus their ancestors, nothing else changes
     const std::set<int> expected = leavesAndAncestors(tree, features);
     std::vector<TypeParam> before;
+    before.reserve(static_cast<std::size_t>(tree.nodeCount()));
     for (int n = 0; n < tree.nodeCount(); ++n) before.push_back(tree.volume(n));
     const int refits = round % 3 == 0 ? tree.maintainVertices(moved, x) : tree.maintain(features, x);
     EXPECT_EQ(refits, static_cast<int>(expected.size()));
@@ -142,6 +143,7 @@ TYPED_TEST(TreeTest, MaintenanceCounts) {
 TYPED_TEST(TreeTest, SegmentTreeOverAChain) {
   Points x(3, 41);
   std::vector<std::array<int, 2>> links;
+  links.reserve(40);
   for (int i = 0; i < 41; ++i) x.col(i) = Vec3(std::cos(0.3 * i), std::sin(0.3 * i), 0.05 * i);
   for (int i = 0; i < 40; ++i) links.push_back({i, i + 1});
   auto tree = BvhTree<TypeParam>::overSegments(links, x);

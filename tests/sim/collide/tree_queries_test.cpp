@@ -99,6 +99,7 @@ TYPED_TEST(QueryTest, SutureThroughTissue) {
   auto planeTree = BvhTree<TypeParam>::overTriangles(grid.triangles(), plane);
   Points chain(3, 61);
   std::vector<std::array<int, 2>> links;
+  links.reserve(60);
   for (int i = 0; i < 61; ++i)
     chain.col(i) = Vec3(-1.2 + 0.04 * i, 0.3 * std::sin(0.2 * i), 0.3 * std::sin(0.35 * i));
   for (int i = 0; i < 60; ++i) links.push_back({i, i + 1});
@@ -122,6 +123,7 @@ template <class Curve>
 std::pair<Points, std::vector<std::array<int, 2>>> chainAlong(int count, Curve curve) {
   Points x(3, count + 1);
   std::vector<std::array<int, 2>> links;
+  links.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i <= count; ++i) x.col(i) = curve(static_cast<double>(i) / count);
   for (int i = 0; i < count; ++i) links.push_back({i, i + 1});
   return {x, links};

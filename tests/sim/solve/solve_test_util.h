@@ -24,7 +24,8 @@ inline SpringModel chain(int links, double k = 10.0) {
 inline SpringControls topPull(int n, double d) {
   SpringControls controls;
   const int top = latticeTopMiddle(n);
-  controls.add(top, Vec3(n / 2, n / 2, n - 1 + d));
+  const int middle = n / 2;  // the top middle node's grid index, rounded down for even n
+  controls.add(top, Vec3(middle, middle, n - 1 + d));
   return controls;
 }
 
