@@ -14,7 +14,7 @@ elseif(MICROSIM_SANITIZE STREQUAL "thread")
   add_link_options(-fsanitize=thread)
 elseif(MICROSIM_SANITIZE STREQUAL "fuzzer")
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    message(FATAL_ERROR "MICROSIM_SANITIZE=fuzzer needs clang (libFuzzer); use the 'fuzz' preset")
+    message(FATAL_ERROR "MICROSIM_SANITIZE=fuzzer needs clang (libFuzzer); use the 'sanitize' preset")
   endif()
   # every library is instrumented for coverage; only the fuzz executables link libFuzzer's main
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
