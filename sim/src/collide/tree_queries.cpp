@@ -22,7 +22,7 @@ bool descend(const BvhTree<Volume>& ta, const Points& xa, const BvhTree<Volume>&
              const Points& xb, bool self, double margin, QueryStats& stats, OnHit&& onHit) {
   if (ta.empty() || tb.empty()) return false;
   std::vector<NodePair> stack;
-  stack.reserve(static_cast<std::size_t>(3 * (ta.height() + tb.height()) + 8));
+  stack.reserve(3 * static_cast<std::size_t>(ta.height() + tb.height()) + 8);
   stack.push_back({0, 0});
   while (!stack.empty()) {
     const NodePair pair = stack.back();
