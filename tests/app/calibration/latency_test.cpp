@@ -24,8 +24,11 @@ std::vector<TimedPosition> sample(double rateHz, double phase, double delay, dou
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0.0, sigma);
   std::vector<TimedPosition> out;
-  for (double t = phase; t < seconds; t += 1.0 / rateHz)
+  // counted in samples, so rounding never adds or drops one
+  for (int k = 0; phase + k / rateHz < seconds; ++k) {
+    const double t = phase + k / rateHz;
     out.push_back({t, frame * motion(t - delay) + Eigen::Vector3d(noise(rng), noise(rng), noise(rng))});
+  }
   return out;
 }
 
