@@ -231,6 +231,7 @@ TEST_P(DrapeTest, AnOverhandKnotPulledTightStaysTied) {
   const double t0 = 0.15;
   const double t1 = 2.0 * std::numbers::pi - 0.15;
   std::vector<Vec3> dense;
+  dense.reserve(400 + 6001 + 400);
   for (int k = 0; k < 400; ++k) dense.push_back(knot(t0) + Vec3(0, 0, 2.0 - 0.005 * k));
   for (int k = 0; k <= 6000; ++k) dense.push_back(knot(t0 + (t1 - t0) * k / 6000.0));
   for (int k = 1; k <= 400; ++k) dense.push_back(knot(t1) - Vec3(0, 0, 0.005 * k));
