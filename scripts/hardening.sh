@@ -28,8 +28,9 @@ stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(sanitize fuzz tidy)
 
 say() { printf '\n== hardening: %s (%s)\n' "$*" "$(date +%H:%M:%S)"; }
+# -noreset: see scripts/test.sh
 under_display_and_postgres() {
-  bash "$here/scripts/postgres-for-tests.sh" xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+  bash "$here/scripts/postgres-for-tests.sh" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
 }
 
 build_sanitize() {

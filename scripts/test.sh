@@ -13,8 +13,10 @@ preset="${MICROSIM_PRESET:-release}"
 # a private runtime dir keeps Qt from warning, and test data out of the user's folders
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 # the storage tests also run against a throwaway PostgreSQL server on loopback
+# -noreset: Xvfb otherwise resets when its last client leaves, and a GUI test that connects
+# during that reset fails with "could not connect to display" (each test is its own process)
 bash "$here/scripts/postgres-for-tests.sh" \
-  xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset "$preset" "$@"
+  xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ctest --preset "$preset" "$@"
 if [ "${MICROSIM_SKIP_HARDENING:-0}" != 1 ]; then
   bash "$here/scripts/hardening.sh"
 fi
