@@ -1,11 +1,11 @@
 #include "gui/viewport.h"
 
+#include "app/gui/core_profile.h"
 #include "gui/simulation_runner.h"
 #include "tracking/manual_source.h"
 
 #include <QImage>
 #include <QSignalSpy>
-#include <QSurfaceFormat>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -29,11 +29,7 @@ struct Fixture {
   std::unique_ptr<Viewport> view;
 
   Fixture() {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    requestCoreProfile();
     EXPECT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
     view = std::make_unique<Viewport>();
     view->resize(800, 600);
@@ -152,7 +148,9 @@ TEST(Viewport, AnaglyphPutsTheLeftEyeInRedAndTheRightEyeInCyan) {
 
   // no stereo buffers here: quad-buffer falls back to anaglyph
   f.view->setStereoMode(StereoMode::QuadBuffer);
-  if (!f.view->quadBufferAvailable()) EXPECT_EQ(f.view->effectiveStereoMode(), StereoMode::Anaglyph);
+  if (!f.view->quadBufferAvailable()) {
+    EXPECT_EQ(f.view->effectiveStereoMode(), StereoMode::Anaglyph);
+  }
 }
 
 TEST(Viewport, SideBySideDrawsOneEyeInEachHalf) {
