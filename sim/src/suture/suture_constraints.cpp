@@ -20,6 +20,17 @@ double sideStretch(const SutureModel& model, int c, const Vec3& p, const ChainCo
   return distance / arc;
 }
 
+// Σ (r_k − rc)(x_k − xc)ᵀ over the first `count` nodes, summed node by node. Written out
+// rather than as one Eigen product: with a dynamic inner size Eigen's blocked matrix product
+// picks its summation order per build (clang's loop unrolling moved a result by an ulp, so a
+// replay's state hash differed between compilers) and allocates its blocking buffers.
+Eigen::Matrix3d crossCovariance(const Points& r, const Vec3& rc, const Points& x, const Vec3& xc,
+                                int count) {
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  for (int k = 0; k < count; ++k) h.noalias() += (r.col(k) - rc) * (x.col(k) - xc).transpose();
+  return h;
+}
+
 }  // namespace
 
 std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
@@ -145,7 +156,7 @@ Eigen::Matrix3d needleRotation(const SutureModel& model, const Points& x) {
   const Points& r = model.needleShape();
   const Vec3 rc = r.rowwise().mean();
   const Vec3 xc = x.leftCols(n + 1).rowwise().mean();
-  const Eigen::Matrix3d h = (r.colwise() - rc) * (x.leftCols(n + 1).colwise() - xc).transpose();
+  const Eigen::Matrix3d h = crossCovariance(r, rc, x, xc, n + 1);
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
   d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
@@ -162,8 +173,7 @@ void rigidifyNeedle(const SutureModel& model, Points& x, int anchor,
     rot = *rotation;
   } else {
     // best rotation about the anchor (Kabsch on offsets from it)
-    const Eigen::Matrix3d h = (r.colwise() - Vec3(r.col(anchor))) *
-                              (x.leftCols(n + 1).colwise() - Vec3(x.col(anchor))).transpose();
+    const Eigen::Matrix3d h = crossCovariance(r, r.col(anchor), x, x.col(anchor), n + 1);
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
     d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
