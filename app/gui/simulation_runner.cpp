@@ -42,7 +42,6 @@ bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::S
     const std::lock_guard lock(snapshotMutex_);
     latest_.reset();
   }
-  spare_.reset();
   {
     const std::lock_guard lock(resultsMutex_);
     events_.clear();
@@ -165,14 +164,14 @@ const std::vector<std::array<int, 3>>& SimulationRunner::tissueTriangles() const
 }
 
 void SimulationRunner::publish() {
-  // a buffer a reader still holds is left to it; fill a fresh one instead
-  if (!spare_ || spare_.use_count() > 1) spare_ = std::make_shared<sim::RenderSnapshot>();
-  sim::fillSnapshot(*scene_, *spare_);
+  std::shared_ptr<sim::RenderSnapshot> next = recycler_.take();
+  sim::fillSnapshot(*scene_, *next);
   {
     const std::lock_guard lock(snapshotMutex_);
-    std::swap(latest_, spare_);
+    latest_.swap(next);
   }
-  if (spare_.use_count() > 1) spare_.reset();
+  // `next` is now the previous snapshot: released here, outside the lock, it goes back to the
+  // recycler unless a reader still holds it
 }
 
 void SimulationRunner::stepOnce(const sim::InputFrame& frame, std::vector<double>* times) {

@@ -10,12 +10,14 @@
 // in StepMode::Deterministic the states are bit-identical to `microsim-cli run` on the same
 // frames (stateHash()).
 //
-// Hand-over: after each step the thread fills a RenderSnapshot it owns alone and swaps it in
-// as the latest under a lock held only for the pointer swap; a reader keeps its shared_ptr as
-// long as it likes (the thread then fills a fresh buffer instead of reusing that one).
+// Hand-over: after each step the thread fills a RenderSnapshot no reader holds (from the
+// SnapshotRecycler) and swaps it in as the latest under a lock held only for the pointer swap;
+// a reader keeps its shared_ptr as long as it likes, and the buffer returns to the recycler
+// when the last holder lets go.
 // Events, pierces and the consumed frames are copied out under a lock after each step.
 // Signals are emitted from the simulation thread (queued to receivers in other threads).
 
+#include "gui/snapshot_recycler.h"
 #include "microsim/sim/scene/input_frame.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/render_snapshot.h"
@@ -118,7 +120,7 @@ class SimulationRunner : public QObject {
 
   mutable std::mutex snapshotMutex_;
   std::shared_ptr<sim::RenderSnapshot> latest_;
-  std::shared_ptr<sim::RenderSnapshot> spare_;  // the thread's next buffer
+  SnapshotRecycler recycler_;
 
   mutable std::mutex resultsMutex_;
   std::vector<sim::SceneEvent> events_;
