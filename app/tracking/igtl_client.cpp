@@ -216,17 +216,21 @@ void IgtlClient::start() {
   if (worker_ != nullptr) return;
   worker_ = new Worker(this, config_, shared_);
   worker_->moveToThread(&thread_);
-  thread_.start();
   Worker* w = worker_;
+  // Both hand-overs are ordered by the thread's start and join, which ThreadSanitizer sees,
+  // rather than by Qt's event-queue lock and semaphore, which it cannot (Qt is not
+  // instrumented): begin() is posted before the thread starts, and end() runs on the
+  // thread itself as its event loop finishes (QThread::finished is emitted there), before
+  // stop()'s wait() returns.
   QMetaObject::invokeMethod(w, [w] { w->begin(); }, Qt::QueuedConnection);
+  connect(&thread_, &QThread::finished, w, &Worker::end, Qt::DirectConnection);
+  thread_.start();
 }
 
 void IgtlClient::stop() {
   if (worker_ == nullptr) return;
-  Worker* w = worker_;
-  QMetaObject::invokeMethod(w, [w] { w->end(); }, Qt::BlockingQueuedConnection);
   thread_.quit();
-  thread_.wait();
+  thread_.wait();  // Worker::end has run on the thread
   delete worker_;
   worker_ = nullptr;
   QMutexLocker lock(&shared_->mutex);
