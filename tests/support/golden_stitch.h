@@ -1,14 +1,21 @@
 #pragma once
 // The golden state hash of resources/recordings/stitch.msrec replayed on
-// resources/scenes/anastomosis.json, in one place for every suite that checks it (the engine,
-// `microsim-cli run`, the GUI's simulation thread). It changes, on purpose, when a solver's
-// arithmetic changes: update it here, with the reason in the commit message. It must never
-// change between runs or build types.
+// resources/scenes/anastomosis.json, and the scores that replay earns on two shipped rubrics,
+// in one place for every suite that checks them (the engine, the scoring library,
+// `microsim-cli run` and `score`, the GUI's simulation thread and lesson flow). They change, on
+// purpose, when a solver's or a metric's arithmetic changes: update them here, with the reason
+// in the commit message. They must never change between runs, build types or compilers.
 #include <cstdint>
 
 namespace microsim::testing {
 
 inline constexpr std::uint64_t kGoldenStitchHash = 0x3b9962f2cdf9ab3aULL;
 inline constexpr const char* kGoldenStitchHashText = "3b9962f2cdf9ab3a";
+
+/// The stitch's score on resources/rubrics/02_needle_entry.json (lesson 2) and on
+/// 03_single_stitch.json (lesson 3). The GUI's lesson flow and `microsim-cli score` are each
+/// held to these, so they agree with each other.
+inline constexpr double kGoldenStitchScoreNeedleEntry = 62.31938160432583;
+inline constexpr double kGoldenStitchScoreSingleStitch = 66.3763863538384;
 
 }  // namespace microsim::testing

@@ -3,6 +3,7 @@
 // when it names one, --db stores the attempt, and bad rubrics, recordings and arguments
 // fail with a message naming the problem.
 #include "support/cli_runner.h"
+#include "support/golden_stitch.h"
 
 #include "microsim/assessment/storage/history_database.h"
 #include "microsim/sim/scene/recording.h"
@@ -24,8 +25,7 @@ const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
 const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
 const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
 const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
-// tests/assessment/scoring/attempt_test.cpp holds the same value
-constexpr double kStitchScore = 66.3763863538384;
+constexpr double kStitchScore = microsim::testing::kGoldenStitchScoreSingleStitch;
 
 QJsonObject readJson(const QString& path) {
   QFile f(path);
@@ -66,6 +66,21 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
                 .exitCode,
             0);
   EXPECT_EQ(readJson(again).value(QStringLiteral("score")).toDouble(), doc.value(QStringLiteral("score")).toDouble());
+}
+
+// The GUI's lesson flow (tests/app/gui/lesson_flow_test.cpp) is held to the same value, so
+// the app and the CLI score lesson 2 alike.
+TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
+  QTemporaryDir dir;
+  const QString out = dir.filePath(QStringLiteral("score.json"));
+  const CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--rubric"),
+                           kRoot + QStringLiteral("/resources/rubrics/02_needle_entry.json"),
+                           QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+                           QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("62.3"))) << r.out.toStdString();
+  EXPECT_NEAR(readJson(out).value(QStringLiteral("score")).toDouble(),
+              microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }
 
 TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {

@@ -1,9 +1,9 @@
 #include "support/golden_stitch.h"
+#include "support/queued_signal_spy.h"
 #include "gui/simulation_runner.h"
 
 #include "microsim/sim/scene/recording.h"
 
-#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -40,8 +40,8 @@ TEST(SimulationRunner, ReplayOfTheStitchGivesTheGoldenHashAndFourPierces) {
   const std::vector<sim::InputFrame> frames = stitchFrames();
   ASSERT_FALSE(frames.empty());
   runner.setRecordingFile(recording);
-  QSignalSpy finished(&runner, &SimulationRunner::replayFinished);
-  QSignalSpy events(&runner, &SimulationRunner::sceneEvent);
+  testing::QueuedSignalSpy finished(&runner, &SimulationRunner::replayFinished);
+  testing::QueuedSignalSpy events(&runner, &SimulationRunner::sceneEvent);
   runner.replay(frames);
   ASSERT_TRUE(finished.count() > 0 || finished.wait(120000));
 
@@ -67,7 +67,7 @@ TEST(SimulationRunner, ReplayOfTheStitchGivesTheGoldenHashAndFourPierces) {
 TEST(SimulationRunner, LiveStepsWithTheLatestSubmittedFrame) {
   SimulationRunner runner;
   ASSERT_TRUE(runner.load(kScene, sim::StepMode::RealTime));
-  QSignalSpy snapshots(&runner, &SimulationRunner::snapshotReady);
+  testing::QueuedSignalSpy snapshots(&runner, &SimulationRunner::snapshotReady);
   runner.start();
   EXPECT_TRUE(runner.isRunning());
   ASSERT_TRUE(snapshots.wait(10000));  // steps happen before any frame (tools untracked)
@@ -103,7 +103,7 @@ TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
   {
     auto runner = std::make_unique<SimulationRunner>();
     ASSERT_TRUE(runner->load(kScene, sim::StepMode::RealTime));
-    QSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
+    testing::QueuedSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
     runner->start();
     ASSERT_TRUE(snapshots.wait(10000));
     runner.reset();  // joins the thread; a hang or a crash fails the test
@@ -111,7 +111,7 @@ TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
   {
     auto runner = std::make_unique<SimulationRunner>();
     ASSERT_TRUE(runner->load(kScene, sim::StepMode::Deterministic));
-    QSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
+    testing::QueuedSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
     runner->replay(stitchFrames());
     ASSERT_TRUE(snapshots.wait(10000));
     runner.reset();
@@ -124,7 +124,7 @@ TEST(SimulationRunner, ASnapshotHeldByTheReaderStaysUntouched) {
   ASSERT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
   const auto held = runner.latestSnapshot();
   const std::vector<float> positions = held->tissuePositions;
-  QSignalSpy finished(&runner, &SimulationRunner::replayFinished);
+  testing::QueuedSignalSpy finished(&runner, &SimulationRunner::replayFinished);
   std::vector<sim::InputFrame> frames = stitchFrames();
   frames.resize(std::min<std::size_t>(frames.size(), 200));
   runner.replay(frames);

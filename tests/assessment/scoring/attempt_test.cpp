@@ -1,6 +1,8 @@
 // Attempts: motion samples follow the frames the scene used (rejected frames repeat the last
 // good one, lost hands hold still), the vessels' angle frame is shared by both ends, and
 // the shipped stitch recording replays to the same pinned score every run, truncated or not.
+#include "support/golden_stitch.h"
+
 #include "microsim/assessment/scoring/attempt.h"
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/scoring/score.h"
@@ -20,7 +22,7 @@ const std::string kScene = kRoot + "/resources/scenes/anastomosis.json";
 const std::string kStitch = kRoot + "/resources/recordings/stitch.msrec";
 const std::string kRubric = kRoot + "/resources/rubrics/03_single_stitch.json";
 // microsim-cli score prints the same (tests/app/cli/score_command_test.cpp)
-constexpr double kStitchScore = 66.3763863538384;
+constexpr double kStitchScore = microsim::testing::kGoldenStitchScoreSingleStitch;
 
 sim::SceneDef anastomosis() {
   auto d = sim::loadSceneDef(kScene);
