@@ -1,6 +1,6 @@
 #pragma once
 // The simulation thread (DESIGN.md §Data flow of one frame): owns a sim::Scene and steps it on
-// its own QThread, so the GUI thread draws at display rate and never waits on a step.
+// its own thread, so the GUI thread draws at display rate and never waits on a step.
 //
 // Live (start): one step every 1/rate s of wall-clock time with the latest frame handed to
 // submitFrame (before the first frame, an untracked one: the tools stay where they are). A
@@ -34,9 +34,8 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <vector>
-
-class QThread;
 
 namespace microsim::gui {
 
@@ -107,7 +106,7 @@ class SimulationRunner : public QObject {
 
   std::unique_ptr<sim::Scene> scene_;  // touched only by the simulation thread while running
   QString scenePath_;
-  QThread* thread_ = nullptr;
+  std::thread thread_;
   std::atomic<bool> running_{false};
   std::atomic<bool> stopRequested_{false};
   std::atomic<int> steps_{0};

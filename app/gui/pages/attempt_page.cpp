@@ -19,7 +19,6 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QStandardPaths>
-#include <QThread>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -111,7 +110,7 @@ AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
 
 AttemptPage::~AttemptPage() {
   stopRunning();
-  if (scoring_) scoring_->wait();
+  if (scoring_.joinable()) scoring_.join();
   viewport_->setRunner(nullptr);
 }
 
@@ -272,11 +271,9 @@ void AttemptPage::finish() {
   base.recordingPath = recordingPath_;
   if (const sim::SceneDef* def = runner_->sceneDef())
     for (const sim::SceneVessel& v : def->vessels) base.vessels.push_back(v.def);
-  if (scoring_) {
-    scoring_->wait();
-    delete scoring_;
-  }
-  scoring_ = QThread::create([this, scene, recording, rubric, base] {
+  if (scoring_.joinable()) scoring_.join();
+  // a std::thread: joining it is a synchronisation ThreadSanitizer sees (QThread::wait() is not)
+  scoring_ = std::thread([this, scene, recording, rubric, base] {
     AttemptResult result = base;
     auto replayed = assessment::replayAttempt(scene, recording);
     if (auto* attempt = std::get_if<assessment::Attempt>(&replayed)) {
@@ -286,7 +283,6 @@ void AttemptPage::finish() {
     }
     QMetaObject::invokeMethod(this, [this, result] { scored(result); }, Qt::QueuedConnection);
   });
-  scoring_->start();
 }
 
 void AttemptPage::scored(const AttemptResult& scoredResult) {

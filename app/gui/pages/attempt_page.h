@@ -28,12 +28,12 @@
 #include <QWidget>
 
 #include <memory>
+#include <thread>
 #include <vector>
 
 class QLabel;
 class QListWidget;
 class QPushButton;
-class QThread;
 class QTimer;
 
 namespace microsim::tracking {
@@ -108,7 +108,7 @@ class AttemptPage : public QWidget {
   QPushButton* finish_ = nullptr;
   QPushButton* abandon_ = nullptr;
   QTimer* progressTimer_ = nullptr;
-  QThread* scoring_ = nullptr;
+  std::thread scoring_;  // replays and scores the finished attempt
 
   lesson::Lesson lesson_;
   int lessonIndex_ = -1;
