@@ -52,7 +52,7 @@ class IgtlClient : public TrackerSource {
   IgtlClientConfig config_;
   std::shared_ptr<Shared> shared_;
   QThread thread_;
-  Worker* worker_ = nullptr;
+  Worker* worker_ = nullptr;  // lives and dies on thread_ (deleted there as it finishes)
 };
 
 /// Parses "HOST:PORT" (PORT optional, default 18944). False on a malformed port.
