@@ -7,14 +7,13 @@
 #      seed corpus in tests/fuzz/corpus/; a crash, leak, timeout or broken property fails the
 #      run and leaves the input in build/sanitize/fuzz-artifacts/ (add it to the corpus as a
 #      regression seed once fixed);
-#   3. clang-tidy over every first-party translation unit (scripts/tidy.sh), which must report
-#      nothing;
-#   and, on request only (`scripts/hardening.sh tsan`), a ThreadSanitizer build (preset "tsan")
-#   of the suites that cross threads: the simulation thread, the tracker client's thread, the
-#   GUI thread. It is not yet a default stage: the tests read QSignalSpy objects that record
-#   signals emitted on the worker threads (a race in the tests, reported by TSan), Qt's
-#   uninstrumented event queue needs suppressions, and TSan aborts in the fork of QProcess.
-# Usage: scripts/hardening.sh [sanitize|fuzz|tidy|tsan ...]   (default: sanitize fuzz tidy)
+#   3. a ThreadSanitizer build (preset "tsan", clang-14, build/tsan) of the suites whose objects
+#      cross threads: the simulation thread (runner, viewport, the attempt page's scoring), the
+#      tracker client's thread and the GUI thread; under Xvfb, stopping at the first report
+#      (tests/sanitizers/tsan.supp says how it stays clean without suppressions);
+#   4. clang-tidy over every first-party translation unit (scripts/tidy.sh), which must report
+#      nothing.
+# Usage: scripts/hardening.sh [sanitize|fuzz|tsan|tidy ...]   (default: all four, in that order)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
@@ -25,7 +24,7 @@ export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-/usr/bin/llvm-symbolizer-14}"
 jobs="$(nproc)"
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(sanitize fuzz tidy)
+[ ${#stages[@]} -eq 0 ] && stages=(sanitize fuzz tsan tidy)
 
 say() { printf '\n== hardening: %s (%s)\n' "$*" "$(date +%H:%M:%S)"; }
 # -noreset: see scripts/test.sh
