@@ -2,8 +2,8 @@
 # README command 2: install, build, and run every test. GUI tests need a display, so the
 # whole suite runs under xvfb-run, beside a PostgreSQL server that scripts/postgres-for-tests.sh
 # starts and stops; ctest prints its summary and fails on any failure. Then the hardening
-# stages (scripts/hardening.sh): the suite under ASan+UBSan, the fuzzers for a bounded time
-# and clang-tidy. MICROSIM_SKIP_HARDENING=1 stops after the
+# stages (scripts/hardening.sh): the suite under ASan+UBSan, the fuzzers for a bounded time,
+# the threaded suites under TSan and clang-tidy. MICROSIM_SKIP_HARDENING=1 stops after the
 # release suite (a quicker check while working; CI never sets it).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
