@@ -6,7 +6,8 @@
 //    "min_poses": 8, "min_spread_deg": 15, "max_rms_mm": 0.5}      (thresholds optional)
 //   (the "last" arrays of `microsim-cli track --json` have this form), or a tracker stream
 //   as `microsim-cli track --record` writes it (tracking/pose_stream.h): the poses of the
-//   device named by --device (needed when the stream holds several)
+//   device named by --device (needed when the stream holds several). A stream cut short
+//   (the recording process was killed) gives its complete samples and a warning.
 // pivot output:
 //   {"status": "ok", "tip_offset": [x, y, z] (tool frame, mm), "pivot": [x, y, z] (tracker
 //    frame, mm), "rms_mm", "max_mm", "spread_deg", "poses"}
@@ -98,11 +99,10 @@ bool readPairs(const QJsonArray& pairs, Eigen::Matrix3Xd& tracker, Eigen::Matrix
   return true;
 }
 
-// the poses of one device of a recorded tracker stream
-bool streamPoses(const QJsonObject& in, const QString& device, std::vector<Eigen::Isometry3d>& poses, QString& error) {
-  tracking::PoseStream stream;
-  const tracking::PoseStreamStatus status = tracking::decodePoseStream(QJsonDocument(in).toJson(), stream);
-  if (!status.ok()) {
+// the poses of one device of a decoded tracker stream (whole, or Truncated: its complete samples)
+bool streamPoses(const tracking::PoseStream& stream, const tracking::PoseStreamStatus& status, const QString& device,
+                 std::vector<Eigen::Isometry3d>& poses, QString& error) {
+  if (!status.ok() && status.error != tracking::PoseStreamError::Truncated) {
     error = status.error == tracking::PoseStreamError::BadSample
                 ? Cli::tr("sample %1 of the tracker stream: bad \"%2\"").arg(status.sample).arg(status.field)
                 : Cli::tr("not a tracker stream this version reads");
@@ -113,7 +113,8 @@ bool streamPoses(const QJsonObject& in, const QString& device, std::vector<Eigen
     if (const auto* p = std::get_if<tracking::RawPose>(&s)) devices.insert(p->device);
   std::string chosen = device.toStdString();
   if (chosen.empty() && devices.size() == 1) chosen = *devices.begin();
-  if (!devices.contains(chosen)) {
+  // a stream with no pose at all (cut right after its header) is "too few poses", below
+  if (!devices.empty() && !devices.contains(chosen)) {
     QStringList names;
     for (const std::string& d : devices) names << QString::fromStdString(d);
     error = Cli::tr("choose the device with --device (the stream holds: %1)").arg(names.join(QStringLiteral(", ")));
@@ -125,9 +126,8 @@ bool streamPoses(const QJsonObject& in, const QString& device, std::vector<Eigen
   return true;
 }
 
-QJsonObject runPivot(const QJsonObject& in, const QString& device, int& exitCode, QString& error) {
-  std::vector<Eigen::Isometry3d> poses;
-  if (in.contains(QStringLiteral("samples")) && !streamPoses(in, device, poses, error)) return {};
+// `poses` holds those of a tracker stream, if the input was one; `in`'s own are appended
+QJsonObject runPivot(const QJsonObject& in, std::vector<Eigen::Isometry3d> poses, int& exitCode, QString& error) {
   for (const QJsonValue& v : in.value(QStringLiteral("poses")).toArray()) {
     const QJsonArray a = v.toArray();
     if (a.size() != 16) {
@@ -206,25 +206,46 @@ int runCalibrate(const QStringList& args, Streams& io) {
     return kExitUsage;
   }
 
-  // the input document
+  // the input document: a JSON object, or for pivot a tracker stream, whole or cut short
+  // (a `track --record` that was killed leaves its complete samples and no end)
   QFile f(parser.value(input));
   if (!f.open(QIODevice::ReadOnly)) {
     io.err << Cli::tr("microsim-cli calibrate: cannot read %1").arg(parser.value(input)) << '\n';
     return kExitFailure;
   }
+  const QByteArray bytes = f.readAll();
   QJsonParseError parseError;
-  const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
-  if (!doc.isObject()) {
+  const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
+  const bool pivot = kind == QLatin1String("pivot");
+  tracking::PoseStream stream;
+  tracking::PoseStreamStatus streamStatus{tracking::PoseStreamError::NotJson, -1, {}};
+  if (pivot && (!doc.isObject() || doc.object().contains(QStringLiteral("samples"))))
+    streamStatus = tracking::decodePoseStream(bytes, stream);
+  const bool cutShort = streamStatus.error == tracking::PoseStreamError::Truncated;
+  if (!doc.isObject() && !cutShort) {
     io.err << Cli::tr("microsim-cli calibrate: %1 is not a JSON object: %2").arg(parser.value(input), parseError.errorString())
            << '\n';
     return kExitFailure;
   }
+  if (cutShort)
+    io.err << Cli::tr("microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); "
+                      "using its %n complete sample(s)",
+                      nullptr, static_cast<int>(stream.samples.size()))
+                  .arg(parser.value(input))
+           << '\n';
 
   // the calibration
   int exitCode = kExitFailure;
   QString error;
-  const QJsonObject result =
-      kind == QLatin1String("pivot") ? runPivot(doc.object(), parser.value(device), exitCode, error) : runRegister(doc.object(), exitCode, error);
+  QJsonObject result;
+  if (!pivot) {
+    result = runRegister(doc.object(), exitCode, error);
+  } else {
+    std::vector<Eigen::Isometry3d> poses;
+    const bool isStream = cutShort || doc.object().contains(QStringLiteral("samples"));
+    if (!isStream || streamPoses(stream, streamStatus, parser.value(device), poses, error))
+      result = runPivot(doc.object(), std::move(poses), exitCode, error);
+  }
   if (!error.isEmpty()) {
     io.err << "microsim-cli calibrate: " << error << '\n';
     return kExitFailure;

@@ -1,15 +1,20 @@
 // A process killed (SIGKILL) in the middle of writing, through the real microsim-cli:
 // `track --record` keeps every sample it had received, readable as Truncated; a killed
 // `db backup` leaves the history as it was and no file under the backup's name.
+// `calibrate pivot` on such a cut stream uses its complete samples and warns.
 // (A killed graded attempt: tests/assessment/storage/history_crash_test.cpp.)
 #include "support/cli_runner.h"
 
+#include "app/calibration/synthetic_pivot_stream.h"
 #include "app/tracking/igtl_test_server.h"
 #include "microsim/assessment/scoring/score.h"
 #include "microsim/assessment/storage/history_database.h"
 #include "tracking/pose_stream.h"
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -141,6 +146,83 @@ TEST(Killed, BackupLeavesTheHistoryAndNoFileUnderTheBackupsName) {
     ASSERT_EQ(rows.size(), kAttempts) << path.toStdString();
     EXPECT_EQ(rows.back().score.value_or(-1.0), kAttempts - 1.0);
   }
+}
+
+// what a `track --record` killed mid-stream leaves: the header and every flushed line, no end
+QByteArray cutStream(const tracking::PoseStream& stream, std::size_t samples, int chopBytes) {
+  const QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("cut.json"));
+  {
+    tracking::PoseStreamWriter writer;
+    EXPECT_TRUE(writer.open(path).ok());
+    for (std::size_t i = 0; i < samples; ++i) EXPECT_TRUE(writer.append(stream.samples[i]).ok());
+    // destroyed without finish(), as by the kill
+  }
+  QFile f(path);
+  EXPECT_TRUE(f.open(QIODevice::ReadOnly));
+  QByteArray bytes = f.readAll();
+  bytes.chop(chopBytes);
+  return bytes;
+}
+
+TEST(Killed, ACutShortTrackerStreamCalibratesThePivotFromItsCompleteSamplesWithAWarning) {
+  const Eigen::Vector3d tip(-1.0, 2.5, 151.0);
+  const Eigen::Vector3d pivot(30.0, 12.0, -200.0);
+  const tracking::PoseStream stream = microsim::testing::pivotStream("Stylus", tip, pivot, 400, 35.0, 0.0);
+  QTemporaryDir dir;
+  const QString file = dir.filePath(QStringLiteral("stream.json"));
+  const QString out = dir.filePath(QStringLiteral("tip.json"));
+  const auto calibrate = [&](const QByteArray& bytes) {
+    QFile f(file);
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(bytes);
+    f.close();
+    QFile::remove(out);
+    return microsim::testing::runCli({QStringLiteral("calibrate"), QStringLiteral("pivot"), QStringLiteral("--input"), file,
+                                      QStringLiteral("--json"), out});
+  };
+  const auto tipOffset = [&] {
+    QFile f(out);
+    EXPECT_TRUE(f.open(QIODevice::ReadOnly));
+    return QJsonDocument::fromJson(f.readAll()).object();
+  };
+
+  // cut inside the 400th line: the 399 complete samples give the tip, with a warning naming the file
+  microsim::testing::CliRun r = calibrate(cutStream(stream, 400, 9));
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString() << r.out.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("warning: %1 was cut short").arg(file))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("using its 399 complete sample(s)"))) << r.err.toStdString();
+  QJsonObject result = tipOffset();
+  EXPECT_EQ(result.value(QStringLiteral("status")).toString(), QStringLiteral("ok"));
+  EXPECT_EQ(result.value(QStringLiteral("poses")).toInt(), 399);
+  const QJsonArray t = result.value(QStringLiteral("tip_offset")).toArray();
+  ASSERT_EQ(t.size(), 3);
+  EXPECT_LE((Eigen::Vector3d(t.at(0).toDouble(), t.at(1).toDouble(), t.at(2).toDouble()) - tip).norm(), 0.01);
+
+  // cut after whole lines (the kill between two samples): all of them
+  r = calibrate(cutStream(stream, 300, 0));
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString() << r.out.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("using its 300 complete sample(s)"))) << r.err.toStdString();
+  EXPECT_EQ(tipOffset().value(QStringLiteral("poses")).toInt(), 300);
+
+  // too few samples left for the fit: the usual refusal, and still the warning
+  r = calibrate(cutStream(stream, 5, 0));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("cut short"))) << r.err.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("too_few_poses"))) << r.out.toStdString();
+  r = calibrate(cutStream(stream, 0, 0));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.out.contains(QStringLiteral("too_few_poses"))) << r.out.toStdString() << r.err.toStdString();
+
+  // the whole stream: no warning; garbage is still refused as before
+  QByteArray whole = cutStream(stream, 400, 0);
+  r = calibrate(whole + "]}\n");
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_FALSE(r.err.contains(QStringLiteral("cut short"))) << r.err.toStdString();
+  EXPECT_EQ(tipOffset().value(QStringLiteral("poses")).toInt(), 400);
+  r = calibrate(whole.mid(1));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("is not a JSON object"))) << r.err.toStdString();
 }
 
 }  // namespace
