@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <thread>
+#include <vector>
 
 namespace microsim::gui {
 namespace {
@@ -33,6 +35,7 @@ TEST(SnapshotRecycler, KeepsOnlyAFewSpares) {
   SnapshotRecycler recycler;
   {
     std::vector<std::shared_ptr<sim::RenderSnapshot>> many;
+    many.reserve(10);
     for (int i = 0; i < 10; ++i) many.push_back(recycler.take());
   }
   EXPECT_EQ(recycler.spare(), SnapshotRecycler::kKeep);
