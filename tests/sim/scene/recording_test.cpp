@@ -66,13 +66,23 @@ TEST(Recording, WriterStreamsTheSameBytesAsTheEncoder) {
 TEST(Recording, AnUnfinishedAttemptKeepsItsCompleteFrames) {
   const Recording r = sample(500);
   const std::string path = tempPath("unfinished");
+  Recording back;
   {
     RecordingWriter w;
     ASSERT_TRUE(w.open(path, r.metadata).ok());
-    for (const InputFrame& f : r.frames) ASSERT_TRUE(w.append(f).ok());
+    for (std::size_t i = 0; i < r.frames.size(); ++i) {
+      ASSERT_TRUE(w.append(r.frames[i]).ok());
+      // what a process killed now would leave (its stdio buffer lost): every frame older
+      // than 0.1 s of attempt time is on disk
+      const RecordingStatus now = readRecording(path, back);
+      ASSERT_EQ(now.error, RecordingError::Truncated) << i;
+      const std::size_t kept = back.frames.size();
+      ASSERT_LE(kept, i + 1);
+      if (kept <= i) ASSERT_GT(r.frames[kept].time, r.frames[i].time - 0.1) << "frame " << i << ": only " << kept << " on disk";
+      for (std::size_t k = 0; k < kept; ++k) ASSERT_EQ(back.frames[k], r.frames[k]) << i;
+    }
     // destroyed without finish(): the app crashed mid-attempt
   }
-  Recording back;
   const RecordingStatus s = readRecording(path, back);
   EXPECT_EQ(s.error, RecordingError::Truncated);
   EXPECT_EQ(back.frames, r.frames);

@@ -12,9 +12,9 @@
 //             position x y z (f64), orientation w x y z (f64), closure (f64)
 //   end       tag 'E' (u8), frame count (u64), CRC-32 (IEEE) of every byte before the CRC (u32)
 //
-// The writer appends frames as they happen and flushes at least once a second of attempt
-// time, so a crash loses at most the last second. A file without its end record is an
-// unfinished attempt: the reader says Truncated and still returns every complete frame.
+// The writer appends frames as they happen and flushes at least every 0.1 s of attempt
+// time, so a crash loses at most the frames of the last 0.1 s. A file without its end
+// record is an unfinished attempt: the reader says Truncated and still returns every complete frame.
 
 #include "microsim/sim/scene/input_frame.h"
 
@@ -68,7 +68,7 @@ class RecordingWriter {
   RecordingWriter& operator=(const RecordingWriter&) = delete;
 
   RecordingStatus open(const std::string& path, const std::string& metadata);
-  /// Appends one frame; flushes when a second of attempt time has passed since the last flush.
+  /// Appends one frame; flushes when 0.1 s of attempt time has passed since the last flush.
   RecordingStatus append(const InputFrame& frame);
   /// Writes the end record and closes the file.
   RecordingStatus finish();
