@@ -15,6 +15,7 @@
 
 #include <QCommandLineParser>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -79,7 +80,7 @@ QString describe(HistoryError error) {
     case HistoryError::BackupTooNew:
       return Cli::tr("the backup was written by a newer microsim");
     case HistoryError::FileError:
-      return Cli::tr("the file could not be written (it may exist already)");
+      return Cli::tr("the file could not be read or written");
     case HistoryError::QueryFailed:
       return Cli::tr("the database reported an error");
   }
@@ -169,6 +170,14 @@ int runDb(const QStringList& args, Streams& io) {
   if (action == QLatin1String("migrate")) {
     io.out << Cli::tr("%1: schema version %2").arg(history.path()).arg(status.schemaVersion) << '\n';
   } else if (action == QLatin1String("backup")) {
+    // said plainly before any copying starts (a server history refuses backup itself, below)
+    if (history.driver() == assessment::Driver::SQLite && QFileInfo::exists(argument)) {
+      io.err << Cli::tr("microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the "
+                        "backup, or move that file away first.")
+                    .arg(argument)
+             << '\n';
+      return kExitFailure;
+    }
     if (!history.backup(argument)) return failed();
     io.out << Cli::tr("backed up %1 to %2").arg(history.path(), argument) << '\n';
   } else if (action == QLatin1String("restore")) {

@@ -113,6 +113,32 @@ TEST(DbCommand, DamagedFileGivesAClearMessageAndStaysAsItWas) {
   EXPECT_EQ(readAll(db), garbage);
 }
 
+TEST(DbCommand, BackupOntoAnExistingFileSaysSoAndLeavesItUntouched) {
+  QTemporaryDir dir;
+  const QString db = dir.filePath(QStringLiteral("history.sqlite"));
+  const QStringList on = {QStringLiteral("--db"), db};
+  ASSERT_EQ(runCli(QStringList{QStringLiteral("db"), QStringLiteral("add-trainee"), QStringLiteral("Ada")} + on).exitCode, 0);
+  const QString target = dir.filePath(QStringLiteral("monday.sqlite"));
+  const QByteArray before = QByteArray("last week's backup, or something else entirely\n").repeated(50);
+  {
+    QFile f(target);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(before);
+  }
+  const CliRun r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("backup"), target} + on);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("%1 exists already; it was left untouched").arg(target))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("Choose another name"))) << r.err.toStdString();
+  EXPECT_FALSE(r.err.contains(QStringLiteral("could not be"))) << r.err.toStdString();
+  EXPECT_EQ(readAll(target), before);
+  EXPECT_FALSE(QFile::exists(target + QStringLiteral(".part")));
+
+  // another name works
+  const CliRun again = runCli(QStringList{QStringLiteral("db"), QStringLiteral("backup"),
+                                          dir.filePath(QStringLiteral("tuesday.sqlite"))} + on);
+  EXPECT_EQ(again.exitCode, 0) << again.err.toStdString();
+}
+
 TEST(DbCommand, UsageErrors) {
   EXPECT_EQ(runCli({QStringLiteral("db")}).exitCode, 2);
   EXPECT_EQ(runCli({QStringLiteral("db"), QStringLiteral("frobnicate")}).exitCode, 2);
