@@ -17,9 +17,9 @@ void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureSt
   for (Pierce& p : state.pierces) p.point = tissuePoint(tissue, tissueX, p.face, p.barycentric);
 }
 
-std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
-                              std::span<const Grip> grips) {
-  std::vector<Vec3> pulls(state.pierces.size(), Vec3::Zero());
+std::vector<PierceTension> pierceTensions(const SutureModel& model, const SutureState& state,
+                                          std::span<const Grip> grips) {
+  std::vector<PierceTension> tensions(state.pierces.size());
   for (const Piece& piece : chainPieces(state.alive)) {
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
     for (std::size_t k = 0; k < cs.size(); ++k) {
@@ -27,6 +27,7 @@ std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state
       // the tightest side's excess, carried by every taut side (one tension through the pierce)
       double excess = 0.0;
       Vec3 pull = Vec3::Zero();
+      bool taut = false;
       for (const std::size_t q : {k - 1, k + 1}) {
         if (q >= cs.size()) continue;  // k − 1 wraps to a huge value at k = 0
         const Vec3 toQ = cs[q].position - cs[k].position;
@@ -34,28 +35,41 @@ std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state
         const double arc = model.arc(cs[k].node, cs[q].node);
         excess = std::max(excess, distance - arc);
         const int link = std::min(cs[k].node, cs[q].node);
-        if (distance > 0.0 && distance >= arc - model.rest(link)) pull += toQ / distance;
+        if (distance > 0.0 && distance >= arc - model.rest(link)) {
+          pull += toQ / distance;
+          taut = true;
+        }
       }
-      pull *= excess;
-      pulls[static_cast<std::size_t>(cs[k].source)] = pull;
+      PierceTension& t = tensions[static_cast<std::size_t>(cs[k].source)];
+      t.pull = excess * pull;
+      t.taut = taut;
     }
   }
+  return tensions;
+}
+
+std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
+                              std::span<const Grip> grips) {
+  std::vector<Vec3> pulls;
+  for (const PierceTension& t : pierceTensions(model, state, grips)) pulls.push_back(t.pull);
   return pulls;
 }
 
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
                                 const SutureModel& model, const SutureState& state,
                                 std::span<const Grip> grips, const CouplingParams& params) {
-  const std::vector<Vec3> pulls = piercePulls(model, state, grips);
+  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips);
 
-  // average the pulls that reach each free corner node (ordered map: deterministic)
+  // average the pulls that reach each free corner node (ordered map: deterministic); a taut
+  // pierce with nothing left to take holds its face where it is, so that the tissue does not
+  // spring back only to be pulled again on the next frame
   std::map<int, std::pair<Vec3, int>> perNode;
-  for (std::size_t k = 0; k < pulls.size(); ++k) {
-    if (pulls[k].isZero(0.0)) continue;
+  for (std::size_t k = 0; k < tensions.size(); ++k) {
+    if (!tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
     for (int node : tissue.triangles()[static_cast<std::size_t>(state.pierces[k].face)]) {
       if (tissue.isFixed(node)) continue;
       auto [it, inserted] = perNode.try_emplace(node, Vec3::Zero(), 0);
-      it->second.first += pulls[k];
+      it->second.first += tensions[k].pull;
       it->second.second += 1;
     }
   }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace microsim::sim::suture {
 namespace {
@@ -63,28 +65,22 @@ TEST(SutureCoupling, PiercePointsFollowTheTissueAndPullsBecomeControls) {
     EXPECT_LT((c.targets.col(k) - tx.col(c.nodes[static_cast<std::size_t>(k)]) - Vec3(0, 0, 0.2)).norm(), 1e-12);
 }
 
-// one frame of the coupled loop: read pierce points, step the suture, pull the tissue
-void frame(const SpringModel& tissue, SpringState& ts, TissueSolver& tsolver, const SutureModel& m,
-           SutureState& s, SutureSolver& ssolver, std::span<const Grip> grips) {
+// one frame of the coupled loop: read pierce points, step the suture, pull the tissue;
+// returns the controls the tissue solved with
+SpringControls frame(const SpringModel& tissue, SpringState& ts, TissueSolver& tsolver,
+                     const SutureModel& m, SutureState& s, SutureSolver& ssolver,
+                     std::span<const Grip> grips, double gain = 0.5) {
   readPiercePoints(tissue, ts.x, s);
   ssolver.step(m, s, grips, {});
-  const SpringControls controls = couplingControls(tissue, ts.x, m, s, grips, {0.5});
+  SpringControls controls = couplingControls(tissue, ts.x, m, s, grips, {gain});
   SolveBudget budget;
   budget.maxIterations = 20;
   tsolver.solve(tissue, ts, controls, budget);
+  return controls;
 }
 
-TEST(SutureCoupling, APiercedSuturePulledAtBothEndsMovesTheVesselNodesNextToThePierce) {
-  const VesselMesh v = vessel();
-  const int face = faceNear(v, Vec3(2.75, 0, 0.5));
-  const auto& tri = v.model.triangles()[static_cast<std::size_t>(face)];
-  SpringState ts = SpringState::atRest(v.model);
-  auto tsolver = makeSolver("newton");
-  ASSERT_NE(tsolver, nullptr);
-
-  // a 4 mm thread through the face: node 20 at the pierce, both halves straight up
-  const SutureModel m = thread(40, 4.0);
-  SutureState s = SutureState::laidOut(m);
+// a 4 mm thread of 40 links through `face`, node 20 at the pierce, both halves straight up
+void threadThroughFace(const VesselMesh& v, const SpringState& ts, int face, SutureState& s) {
   Pierce p;
   p.face = face;
   p.barycentric = Vec3(1.0 / 3, 1.0 / 3, 1.0 / 3);
@@ -95,6 +91,20 @@ TEST(SutureCoupling, APiercedSuturePulledAtBothEndsMovesTheVesselNodesNextToTheP
   for (int i = 0; i <= 40; ++i) s.x.col(i) = P + Vec3(0.0, 0.0, 0.1 * std::abs(i - 20));
   s.x.col(0).x() -= 1e-3;  // two strands, not one
   s.xPrev = s.x;
+}
+
+TEST(SutureCoupling, APiercedSuturePulledAtBothEndsMovesTheVesselNodesNextToThePierce) {
+  const VesselMesh v = vessel();
+  const int face = faceNear(v, Vec3(2.75, 0, 0.5));
+  const auto& tri = v.model.triangles()[static_cast<std::size_t>(face)];
+  SpringState ts = SpringState::atRest(v.model);
+  auto tsolver = makeSolver("newton");
+  ASSERT_NE(tsolver, nullptr);
+
+  const SutureModel m = thread(40, 4.0);
+  SutureState s = SutureState::laidOut(m);
+  threadThroughFace(v, ts, face, s);
+  const Vec3 P = s.pierces[0].point;
   auto ssolver = makeSutureSolver("direct");
 
   // both ends pulled up 0.5 mm past taut
@@ -110,6 +120,82 @@ TEST(SutureCoupling, APiercedSuturePulledAtBothEndsMovesTheVesselNodesNextToTheP
   // the clamped ring does not move
   for (int node : v.model.fixedNodes())
     EXPECT_EQ(ts.x.col(node), v.model.restPositions().col(node));
+}
+
+// A taut pierce whose excess the tissue has taken holds its face: the coupling's controls
+// stay on from frame to frame instead of switching off and on (release, spring back, pull
+// again), which made every other step of the fine scene a whole-vessel solve.
+TEST(SutureCoupling, ATautPierceWithNoExcessKeepsItsControlFromFrameToFrame) {
+  const VesselMesh v = vessel();
+  const int face = faceNear(v, Vec3(2.75, 0, 0.5));
+  const auto& tri = v.model.triangles()[static_cast<std::size_t>(face)];
+  SpringState ts = SpringState::atRest(v.model);
+  auto tsolver = makeSolver("newton");
+  auto ssolver = makeSutureSolver("direct");
+  const SutureModel m = thread(40, 4.0);
+  SutureState s = SutureState::laidOut(m);
+  threadThroughFace(v, ts, face, s);
+  const Vec3 P = s.pierces[0].point;
+  const auto pulledTo = [&](double up) {
+    const Grip g[2] = {{0, P + Vec3(-1e-3, 0, up)}, {40, P + Vec3(0, 0, up)}};
+    return frame(v.model, ts, *tsolver, m, s, *ssolver, g, 1.0);
+  };
+
+  // pulled 0.1 mm past taut over 10 frames, then held still for 6: the pierce stays taut
+  // throughout, so its face's three nodes are controlled on every frame (the tissue takes
+  // each frame's excess at once, and a frame with none left holds the face where it is)
+  std::vector<int> controlCounts;
+  for (int k = 1; k <= 10; ++k) controlCounts.push_back(pulledTo(2.0 + 0.01 * k).size());
+  const Points heldAt = ts.x;
+  for (int k = 0; k < 6; ++k) {
+    const SpringControls c = pulledTo(2.1);
+    controlCounts.push_back(c.size());
+    for (int i = 0; i < c.size(); ++i)
+      EXPECT_LT((c.targets.col(i) - heldAt.col(c.nodes[static_cast<std::size_t>(i)])).norm(), 1e-6);
+  }
+  EXPECT_EQ(controlCounts, std::vector<int>(16, 3));
+
+  // the face stayed up where the pull left it; nothing sprang back
+  for (int node : tri) {
+    EXPECT_GT(ts.x(2, node) - v.model.restPositions()(2, node), 0.05) << node;
+    EXPECT_LT((ts.x.col(node) - heldAt.col(node)).norm(), 1e-6) << node;
+  }
+
+  // the ends come down and the thread goes slack: the face is let go
+  EXPECT_EQ(pulledTo(1.0).size(), 0);
+}
+
+TEST(SutureCoupling, PierceTensionsTellTautFromPulling) {
+  const VesselMesh v = vessel();
+  const SutureModel m = thread(40, 4.0);
+  SutureState s = SutureState::laidOut(m);
+  Pierce p;
+  p.face = faceNear(v, Vec3(2.5, 0, 0.5));
+  p.barycentric = Vec3(0.2, 0.3, 0.5);
+  p.node = 20;
+  s.pierces.push_back(p);
+  const Points& rest = v.model.restPositions();
+  readPiercePoints(v.model, rest, s);
+  const Vec3 P = s.pierces[0].point;
+
+  // both ends 1.99 mm from the pierce with 2 mm of thread each way: within a link of
+  // straight, so taut, but with no excess to pull: the face is held where it is
+  const Grip straight[2] = {{0, P + Vec3(0, 0, 1.99)}, {40, P + Vec3(0, 0, 1.99)}};
+  std::vector<PierceTension> t = pierceTensions(m, s, straight);
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_TRUE(t[0].taut);
+  EXPECT_TRUE(t[0].pull.isZero(0.0));
+  const SpringControls held = couplingControls(v.model, rest, m, s, straight);
+  ASSERT_EQ(held.size(), 3);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(held.targets.col(k), rest.col(held.nodes[static_cast<std::size_t>(k)]));
+
+  // both ends 1 mm from the pierce: slack, neither taut nor pulling, nothing held
+  const Grip slack[2] = {{0, P + Vec3(0, 0, 1.0)}, {40, P + Vec3(0, 0, 1.0)}};
+  t = pierceTensions(m, s, slack);
+  EXPECT_FALSE(t[0].taut);
+  EXPECT_TRUE(t[0].pull.isZero(0.0));
+  EXPECT_EQ(couplingControls(v.model, rest, m, s, slack).size(), 0);
 }
 
 // two vessels facing each other across a gap, as one tissue model

@@ -16,6 +16,12 @@
 //      corner node of the pierced face becomes a control node with target
 //      x_node + gain · pull(P) (pulls of several pierces on one node are averaged), which the
 //      existing tissue solvers honour as SpringControls (a forceps grab does the same).
+//      A pierce with a taut side but no excess left (the tissue took it last frame) holds its
+//      face where it is (pull 0): a taut thread carries the tissue's tension. Releasing it
+//      instead let the tissue spring back, be pulled again the next frame, and so on, every
+//      other frame a whole-vessel solve from scratch. The hold is a position control, so it
+//      also stops the face moving towards Q (which a thread cannot resist) until the side
+//      goes slack by more than a link, e.g. when the hand comes back.
 //   4. the tissue solves with those controls; the next frame reads the moved points back.
 // The suture is inextensible and the tissue yields: gain ∈ (0, 1] is the fraction of the
 // excess the tissue takes per frame (1 = at once; less damps the exchange).
@@ -40,6 +46,18 @@ Vec3 tissuePoint(const SpringModel& tissue, const Points& tissueX, int face, con
 
 /// Re-reads every pierce point from the tissue positions (3 by #tissue nodes).
 void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureState& state);
+
+/// What the thread does at one pierce: pull(P) of the header essay (mm) and whether a side is
+/// taut (then the pierce holds its face even with no excess left).
+struct PierceTension {
+  Vec3 pull = Vec3::Zero();
+  bool taut = false;
+};
+
+/// The tension at each pierce, in SutureState::pierces order; passive pierces (on the
+/// needle) are neither taut nor pulling.
+std::vector<PierceTension> pierceTensions(const SutureModel& model, const SutureState& state,
+                                          std::span<const Grip> grips);
 
 /// pull(P) of the header essay for each pierce, in SutureState::pierces order (mm); zero for
 /// passive pierces (on the needle) and for pierces with no over-long side.
