@@ -1,5 +1,7 @@
 #include "gui/calibration/profile_chooser_dialog.h"
 
+#include "gui/save_file.h"
+
 #include <QDialogButtonBox>
 #include <QFile>
 #include <QFileDialog>
@@ -102,13 +104,19 @@ std::optional<qint64> ProfileChooserDialog::importFile(const QString& path, QStr
 bool ProfileChooserDialog::exportFile(qint64 id, const QString& path, QString* error) {
   assessment::SetupProfileStore store(*database_);
   const std::optional<assessment::SetupProfile> profile = store.load(id);
-  QFile f(path);
-  if (!profile || !f.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-      f.write(assessment::exportProfileJson(*profile)) < 0) {
-    *error = tr("Cannot write %1.").arg(path);
+  if (!profile) {
+    *error = tr("The profile could not be read: %1").arg(store.lastError());
     return false;
   }
-  return true;
+  SaveFile f(path);
+  QString why;
+  bool written = f.open(why);
+  if (written) {
+    f.device()->write(assessment::exportProfileJson(*profile));
+    written = f.commit(why);
+  }
+  if (!written) *error = tr("Cannot write %1: %2").arg(path, why);
+  return written;
 }
 
 QString ProfileChooserDialog::describe(const assessment::ProfileJsonError& e) {

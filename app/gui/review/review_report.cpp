@@ -2,6 +2,7 @@
 
 #include "gui/review/review_charts.h"
 #include "gui/review/review_text.h"
+#include "gui/save_file.h"
 
 #include <QChart>
 #include <QDateTime>
@@ -10,7 +11,6 @@
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QSaveFile>
 
 #include <functional>
 #include <memory>
@@ -98,21 +98,22 @@ QString fail(QString* error, const QString& message) {
 
 bool ReviewReport::writeCsv(assessment::HistoryDatabase& history, const assessment::Viewer& viewer,
                             const QString& path, QString* error) {
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly)) {
-    fail(error, tr("Cannot write %1: %2").arg(path, file.errorString()));
+  SaveFile file(path);
+  QString why;
+  if (!file.open(why)) {
+    fail(error, tr("Cannot write %1: %2").arg(path, why));
     return false;
   }
-  if (!history.exportCsv(viewer, file)) {
-    file.cancelWriting();
+  if (!history.exportCsv(viewer, *file.device())) {
+    file.cancel();
     const assessment::HistoryStatus status = history.lastError();
     fail(error, status.error == assessment::HistoryError::Forbidden
                     ? tr("You may not export these attempts.")
                     : tr("The export failed: %1").arg(status.driverMessage));
     return false;
   }
-  if (!file.commit()) {
-    fail(error, tr("Cannot write %1: %2").arg(path, file.errorString()));
+  if (!file.commit(why)) {
+    fail(error, tr("Cannot write %1: %2").arg(path, why));
     return false;
   }
   return true;
@@ -120,7 +121,14 @@ bool ReviewReport::writeCsv(assessment::HistoryDatabase& history, const assessme
 
 bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& catalog, const QString& path,
                             QString* error) {
-  QPdfWriter writer(path);
+  // through a SaveFile: QPdfWriter's own file would drop a full disk's error
+  SaveFile file(path);
+  QString why;
+  if (!file.open(why)) {
+    fail(error, tr("Cannot write %1: %2").arg(path, why));
+    return false;
+  }
+  QPdfWriter writer(file.device());
   writer.setPageSize(QPageSize(QPageSize::A4));
   writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
   writer.setResolution(300);
@@ -128,6 +136,7 @@ bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& ca
   writer.setCreator(QStringLiteral("microsim"));
   QPainter painter;
   if (!painter.begin(&writer)) {
+    file.cancel();
     fail(error, tr("Cannot write %1.").arg(path));
     return false;
   }
@@ -170,8 +179,9 @@ bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& ca
     r.space(1);
     r.chart(chart.get());
   }
-  if (!painter.end()) {
-    fail(error, tr("Cannot write %1.").arg(path));
+  if (!painter.end() || !file.commit(why)) {
+    file.cancel();
+    fail(error, why.isEmpty() ? tr("Cannot write %1.").arg(path) : tr("Cannot write %1: %2").arg(path, why));
     return false;
   }
   return true;

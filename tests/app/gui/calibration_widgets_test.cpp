@@ -8,9 +8,11 @@
 #include "gui/calibration/tracker_status_widget.h"
 
 #include "app/calibration/synthetic_pivot_stream.h"
+#include "microsim/assessment/storage/setup_profiles.h"
 #include "tracking/replay_source.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QMainWindow>
 #include <QMenuBar>
 #include <QSignalSpy>
@@ -107,6 +109,32 @@ TEST(CalibrationWidgets, ChooserImportsExportsAndNamesTheFieldAtFault) {
   }
   EXPECT_FALSE(chooser.importFile(bad, &error));
   EXPECT_TRUE(error.contains(QStringLiteral("motion_scaling.hand_per_scene"))) << error.toStdString();
+}
+
+TEST(CalibrationWidgets, ChooserExportOnAFullDiskNamesTheFileAndTheReason) {
+  QTemporaryDir dir;
+  assessment::HistoryDatabase db;
+  ASSERT_TRUE(db.open(dir.filePath(QStringLiteral("h.sqlite"))).ok());
+  assessment::SetupProfileStore store(db);
+  const std::optional<qint64> id = store.save(profile());
+  ASSERT_TRUE(id) << store.lastError().toStdString();
+  ProfileChooserDialog chooser(&db);
+  QString error;
+
+  // /dev/full: QFile takes the bytes into its buffer; the flush is where ENOSPC shows
+  const QString full = QStringLiteral("/dev/full");
+  ASSERT_TRUE(QFileInfo::exists(full) && !QFileInfo(full).isFile()) << "/dev/full is not the device";
+  EXPECT_FALSE(chooser.exportFile(*id, full, &error));
+  EXPECT_TRUE(error.contains(full)) << error.toStdString();
+  EXPECT_TRUE(error.contains(QStringLiteral("No space left on device"))) << error.toStdString();
+  // written in place, never replaced (QSaveFile's rename would succeed as root)
+  ASSERT_FALSE(QFileInfo(full).isFile()) << "the export put a regular file where the device was; as root restore it: rm /dev/full && mknod -m 666 /dev/full c 1 7";
+
+  const QString nowhere = dir.filePath(QStringLiteral("missing/out.json"));
+  error.clear();
+  EXPECT_FALSE(chooser.exportFile(*id, nowhere, &error));
+  EXPECT_TRUE(error.contains(nowhere)) << error.toStdString();
+  EXPECT_TRUE(error.contains(QStringLiteral("No such file or directory"))) << error.toStdString();
 }
 
 TEST(CalibrationWidgets, MenuSessionCalibratesTheFramesItPassesOn) {

@@ -16,6 +16,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QListWidget>
@@ -336,6 +337,42 @@ TEST_F(ReviewPageTest, PdfReportIsWritten) {
   const QByteArray bytes = file.readAll();
   EXPECT_TRUE(bytes.startsWith("%PDF-"));
   EXPECT_GT(bytes.size(), 2000);
+}
+
+// a full disk (/dev/full: every write fails with ENOSPC): each export says so, naming the
+// file and the reason, and does not claim success
+TEST_F(ReviewPageTest, ExportsOnAFullDiskReportTheFileAndTheReason) {
+  ReviewPage page(history_, signInInstructor());
+  page.resize(1200, 800);
+  page.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&page));
+  page.showTrainee(ana_);
+  const QString full = QStringLiteral("/dev/full");
+  ASSERT_TRUE(QFileInfo::exists(full) && !QFileInfo(full).isFile()) << "/dev/full is not the device";
+
+  page.setCsvPath(full);
+  EXPECT_FALSE(page.exportCsv());
+  EXPECT_TRUE(page.message().contains(full)) << page.message().toStdString();
+  EXPECT_TRUE(page.message().contains(QStringLiteral("No space left on device"))) << page.message().toStdString();
+  EXPECT_FALSE(page.message().contains(QStringLiteral("Exported"))) << page.message().toStdString();
+
+  page.setPdfPath(full);
+  EXPECT_FALSE(page.exportPdf());
+  EXPECT_TRUE(page.message().contains(full)) << page.message().toStdString();
+  EXPECT_TRUE(page.message().contains(QStringLiteral("No space left on device"))) << page.message().toStdString();
+  EXPECT_FALSE(page.message().contains(QStringLiteral("Saved"))) << page.message().toStdString();
+  // written in place, never replaced (QSaveFile's rename would succeed as root)
+  ASSERT_FALSE(QFileInfo(full).isFile()) << "the export put a regular file where the device was; as root restore it: rm /dev/full && mknod -m 666 /dev/full c 1 7";
+
+  // a folder that cannot be created: the reason too, and the page keeps working afterwards
+  const QString nowhere = dir_.filePath(QStringLiteral("missing/ana.pdf"));
+  page.setPdfPath(nowhere);
+  EXPECT_FALSE(page.exportPdf());
+  EXPECT_TRUE(page.message().contains(nowhere)) << page.message().toStdString();
+  const QString path = dir_.filePath(QStringLiteral("ana.pdf"));
+  page.setPdfPath(path);
+  EXPECT_TRUE(page.exportPdf()) << page.message().toStdString();
+  EXPECT_TRUE(page.message().contains(path)) << page.message().toStdString();
 }
 
 }  // namespace
