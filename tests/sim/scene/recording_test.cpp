@@ -78,7 +78,9 @@ TEST(Recording, AnUnfinishedAttemptKeepsItsCompleteFrames) {
       ASSERT_EQ(now.error, RecordingError::Truncated) << i;
       const std::size_t kept = back.frames.size();
       ASSERT_LE(kept, i + 1);
-      if (kept <= i) ASSERT_GT(r.frames[kept].time, r.frames[i].time - 0.1) << "frame " << i << ": only " << kept << " on disk";
+      if (kept <= i) {
+        ASSERT_GT(r.frames[kept].time, r.frames[i].time - 0.1) << "frame " << i << ": only " << kept << " on disk";
+      }
       for (std::size_t k = 0; k < kept; ++k) ASSERT_EQ(back.frames[k], r.frames[k]) << i;
     }
     // destroyed without finish(): the app crashed mid-attempt
