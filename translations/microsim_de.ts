@@ -711,10 +711,6 @@
         <translation>die Sicherung wurde von einer neueren microsim-Version geschrieben</translation>
     </message>
     <message>
-        <source>the file could not be written (it may exist already)</source>
-        <translation>die Datei konnte nicht geschrieben werden (vielleicht existiert sie bereits)</translation>
-    </message>
-    <message>
         <source>the database reported an error</source>
         <translation>die Datenbank meldete einen Fehler</translation>
     </message>
@@ -1021,6 +1017,18 @@
     <message>
         <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
         <translation>Aufruf: microsim-cli track --igtl HOST:PORT [--duration S] [--json DATEI] [--record DATEI] [--once] [--max-speed MM_S]</translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
+        <translation><numerusform>microsim-cli calibrate: Warnung: %1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet wird sein %n vollständiges Sample</numerusform><numerusform>microsim-cli calibrate: Warnung: %1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet werden seine %n vollständigen Samples</numerusform></translation>
+    </message>
+    <message>
+        <source>the file could not be read or written</source>
+        <translation>die Datei konnte nicht gelesen oder geschrieben werden</translation>
+    </message>
+    <message>
+        <source>microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
+        <translation>microsim-cli db backup: %1 existiert bereits und wurde nicht verändert. Wählen Sie einen anderen Namen für die Sicherung oder verschieben Sie diese Datei zuerst.</translation>
     </message>
 </context>
 <context>
@@ -1970,10 +1978,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>Das Profil konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <source>Cannot write %1.</source>
-        <translation>%1 kann nicht geschrieben werden.</translation>
-    </message>
-    <message>
         <source>The file is not a JSON document.</source>
         <translation>Die Datei ist kein JSON-Dokument.</translation>
     </message>
@@ -1992,6 +1996,14 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The field "%1" has a value that is not allowed.</source>
         <translation>Das Feld „%1“ hat einen unzulässigen Wert.</translation>
+    </message>
+    <message>
+        <source>The profile could not be read: %1</source>
+        <translation>Das Profil konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
     </message>
 </context>
 <context>

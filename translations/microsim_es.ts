@@ -711,10 +711,6 @@
         <translation>la copia de seguridad fue escrita por una versión más reciente de microsim</translation>
     </message>
     <message>
-        <source>the file could not be written (it may exist already)</source>
-        <translation>no se pudo escribir el archivo (quizá ya existe)</translation>
-    </message>
-    <message>
         <source>the database reported an error</source>
         <translation>la base de datos informó de un error</translation>
     </message>
@@ -1021,6 +1017,18 @@
     <message>
         <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
         <translation>Uso: microsim-cli track --igtl HOST:PUERTO [--duration S] [--json ARCHIVO] [--record ARCHIVO] [--once] [--max-speed MM_S]</translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
+        <translation><numerusform>microsim-cli calibrate: aviso: %1 está incompleto (la grabación se detuvo antes de su final); se usa su %n muestra completa</numerusform><numerusform>microsim-cli calibrate: aviso: %1 está incompleto (la grabación se detuvo antes de su final); se usan sus %n muestras completas</numerusform></translation>
+    </message>
+    <message>
+        <source>the file could not be read or written</source>
+        <translation>no se pudo leer ni escribir el archivo</translation>
+    </message>
+    <message>
+        <source>microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
+        <translation>microsim-cli db backup: %1 ya existe; no se ha modificado. Elija otro nombre para la copia de seguridad o mueva antes ese archivo.</translation>
     </message>
 </context>
 <context>
@@ -1970,10 +1978,6 @@ Error RMS %7 mm, máximo %8 mm
         <translation>No se pudo guardar el perfil: %1</translation>
     </message>
     <message>
-        <source>Cannot write %1.</source>
-        <translation>No se puede escribir %1.</translation>
-    </message>
-    <message>
         <source>The file is not a JSON document.</source>
         <translation>El archivo no es un documento JSON.</translation>
     </message>
@@ -1992,6 +1996,14 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The field "%1" has a value that is not allowed.</source>
         <translation>El campo «%1» tiene un valor no permitido.</translation>
+    </message>
+    <message>
+        <source>The profile could not be read: %1</source>
+        <translation>No se pudo leer el perfil: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
     </message>
 </context>
 <context>
