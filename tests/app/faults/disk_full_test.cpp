@@ -6,6 +6,7 @@
 #include "microsim/assessment/storage/history_database.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -28,6 +29,10 @@ class DiskFull : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!QFile::exists(kFull)) GTEST_SKIP() << "no /dev/full on this system";
+    // a writer that renames over its target, run as root, can leave a regular file there;
+    // every test below would then fail for that reason rather than its own
+    ASSERT_FALSE(QFileInfo(kFull).isFile())
+        << "/dev/full is a regular file, not the device; as root restore it: rm /dev/full && mknod -m 666 /dev/full c 1 7";
   }
 
   // a history with a trainee, an instructor and one begun attempt
