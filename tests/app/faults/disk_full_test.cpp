@@ -3,13 +3,20 @@
 // not write (exit code 1), never report success, and leave the history it read intact.
 #include "support/cli_runner.h"
 
+#include "app/tracking/igtl_test_server.h"
+#include "tracking/pose_stream.h"
+
 #include "microsim/assessment/storage/history_database.h"
 
 #include <QFile>
+#include <QProcess>
 #include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
+
+#include <csignal>
+#include <sys/resource.h>
 
 namespace {
 
@@ -93,6 +100,51 @@ TEST_F(DiskFull, RunRecordFailsBeforeTheFirstStep) {
                            QStringLiteral("3"), QStringLiteral("--record"), kFull});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write the recording"))) << r.err.toStdString();
+}
+
+// A disk that fills while the stream is being recorded: the child's file-size limit
+// (RLIMIT_FSIZE, with SIGXFSZ ignored) makes a write fail part-way through, as ENOSPC would.
+TEST(DiskFillsMidStream, TrackRecordStopsWithAnErrorAndKeepsTheCompleteSamples) {
+  constexpr int kPoses = 400;
+  constexpr rlim_t kFileLimit = 4096;  // bytes: the header and some dozens of samples
+  std::vector<Eigen::Matrix4d> poses;
+  poses.reserve(kPoses);
+  for (int i = 0; i < kPoses; ++i)
+    poses.push_back(microsim::testing::floatPose(0.01 * i, {0, 0, 1}, {1.0 * i, 2.0, -3.0}));
+  // the link stays up: the client must stop by itself
+  const microsim::testing::PoseStreamingServer server(std::move(poses));
+  ASSERT_GT(server.port(), 0);
+  const std::vector<Eigen::Matrix4d>& sent = server.poses();
+
+  QTemporaryDir dir;
+  const QString file = dir.filePath(QStringLiteral("stream.json"));
+  QProcess track;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
+  track.setProcessEnvironment(env);
+  track.setChildProcessModifier([] {
+    const rlimit limit{kFileLimit, kFileLimit};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead of killing
+  });
+  track.start(QStringLiteral(MICROSIM_CLI_PATH),
+              {QStringLiteral("track"), QStringLiteral("--igtl"), QStringLiteral("127.0.0.1:%1").arg(server.port()),
+               QStringLiteral("--duration"), QStringLiteral("60"), QStringLiteral("--record"), file});
+  ASSERT_TRUE(track.waitForFinished(60000));
+  const QString err = QString::fromUtf8(track.readAllStandardError());
+  EXPECT_EQ(track.exitStatus(), QProcess::NormalExit);
+  EXPECT_EQ(track.exitCode(), 1) << err.toStdString();
+  EXPECT_TRUE(err.contains(QStringLiteral("cannot write ") + file)) << err.toStdString();
+
+  // what reached the disk is the stream's beginning, cut inside a line: every complete
+  // sample is there, exactly as sent
+  EXPECT_LE(QFileInfo(file).size(), static_cast<qint64>(kFileLimit));
+  microsim::tracking::PoseStream back;
+  EXPECT_EQ(microsim::tracking::readPoseStream(file, back).error, microsim::tracking::PoseStreamError::Truncated);
+  ASSERT_GT(back.samples.size(), 5u);
+  ASSERT_LT(back.samples.size(), sent.size());
+  for (std::size_t i = 0; i < back.samples.size(); ++i)
+    EXPECT_TRUE(std::get<microsim::tracking::RawPose>(back.samples[i]).matrix.isApprox(sent[i], 1e-6)) << i;
 }
 
 TEST_F(DiskFull, TrackRecordFailsBeforeConnecting) {

@@ -22,7 +22,6 @@
 
 #include <gtest/gtest.h>
 
-#include <future>
 
 namespace {
 
@@ -30,7 +29,6 @@ using microsim::assessment::AttemptMode;
 using microsim::assessment::AttemptScore;
 using microsim::assessment::HistoryDatabase;
 using microsim::assessment::Role;
-using microsim::testing::IgtlTestServer;
 namespace tracking = microsim::tracking;
 
 // microsim-cli started as a user would, left running
@@ -50,25 +48,13 @@ std::size_t samplesIn(const QString& path) {
 
 TEST(Killed, TrackRecordKeepsEveryReceivedSampleReadableAsTruncated) {
   constexpr int kPoses = 60;
-  std::vector<Eigen::Matrix4d> sent;
-  sent.reserve(kPoses);
+  std::vector<Eigen::Matrix4d> poses;
+  poses.reserve(kPoses);
   for (int i = 0; i < kPoses; ++i)
-    sent.push_back(microsim::testing::floatPose(0.01 * i, {0, 0, 1}, {1.0 * i, 2.0, -3.0}));
-  std::promise<void> killed;
-  IgtlTestServer server;
+    poses.push_back(microsim::testing::floatPose(0.01 * i, {0, 0, 1}, {1.0 * i, 2.0, -3.0}));
+  const microsim::testing::PoseStreamingServer server(std::move(poses));  // the link stays up until the kill
   ASSERT_GT(server.port(), 0);
-  server.run([&sent, done = killed.get_future().share()](IgtlTestServer& s) {
-    if (!s.accept()) return;
-    for (std::size_t i = 0; i < sent.size(); ++i)
-      s.send(microsim::testing::transformMessage("Stylus", sent[i], 0.01 * static_cast<double>(i)));
-    // the link stays up until the client is dead
-    done.wait();
-    s.closeClient();
-  });
-  struct Release {
-    std::promise<void>& p;
-    ~Release() { p.set_value(); }
-  } release{killed};
+  const std::vector<Eigen::Matrix4d>& sent = server.poses();
 
   QTemporaryDir dir;
   const QString file = dir.filePath(QStringLiteral("stream.json"));

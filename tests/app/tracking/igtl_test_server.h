@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <string>
 #include <thread>
 #include <vector>
@@ -138,5 +139,32 @@ inline std::vector<std::uint8_t> packed(igtl::MessageBase* message) {
   const auto* p = static_cast<const std::uint8_t*>(message->GetPackPointer());
   return std::vector<std::uint8_t>(p, p + message->GetPackSize());
 }
+
+/// A server that sends `poses` to its first client as TRANSFORM messages from "Stylus",
+/// 0.01 s apart, then keeps the link up until it is destroyed: for tests in which the client
+/// must stop by itself or be killed.
+class PoseStreamingServer {
+ public:
+  explicit PoseStreamingServer(std::vector<Eigen::Matrix4d> poses) : poses_(std::move(poses)) {
+    server_.run([this, released = release_.get_future().share()](IgtlTestServer& s) {
+      if (!s.accept()) return;
+      for (std::size_t i = 0; i < poses_.size(); ++i)
+        s.send(transformMessage("Stylus", poses_[i], 0.01 * static_cast<double>(i)));
+      released.wait();
+      s.closeClient();
+    });
+  }
+  ~PoseStreamingServer() { release_.set_value(); }  // before server_ joins its thread
+  PoseStreamingServer(const PoseStreamingServer&) = delete;
+  PoseStreamingServer& operator=(const PoseStreamingServer&) = delete;
+
+  int port() const { return server_.port(); }
+  const std::vector<Eigen::Matrix4d>& poses() const { return poses_; }
+
+ private:
+  std::vector<Eigen::Matrix4d> poses_;
+  std::promise<void> release_;
+  IgtlTestServer server_;
+};
 
 }  // namespace microsim::testing
