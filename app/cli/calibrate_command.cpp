@@ -217,10 +217,11 @@ int runCalibrate(const QStringList& args, Streams& io) {
   QJsonParseError parseError;
   const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
   const bool pivot = kind == QLatin1String("pivot");
+  // a stream's document has "samples"; one cut short is no JSON document at all
+  const bool isStream = pivot && (!doc.isObject() || doc.object().contains(QStringLiteral("samples")));
   tracking::PoseStream stream;
   tracking::PoseStreamStatus streamStatus{tracking::PoseStreamError::NotJson, -1, {}};
-  if (pivot && (!doc.isObject() || doc.object().contains(QStringLiteral("samples"))))
-    streamStatus = tracking::decodePoseStream(bytes, stream);
+  if (isStream) streamStatus = tracking::decodePoseStream(bytes, stream);
   const bool cutShort = streamStatus.error == tracking::PoseStreamError::Truncated;
   if (!doc.isObject() && !cutShort) {
     io.err << Cli::tr("microsim-cli calibrate: %1 is not a JSON object: %2").arg(parser.value(input), parseError.errorString())
@@ -242,7 +243,6 @@ int runCalibrate(const QStringList& args, Streams& io) {
     result = runRegister(doc.object(), exitCode, error);
   } else {
     std::vector<Eigen::Isometry3d> poses;
-    const bool isStream = cutShort || doc.object().contains(QStringLiteral("samples"));
     if (!isStream || streamPoses(stream, streamStatus, parser.value(device), poses, error))
       result = runPivot(doc.object(), std::move(poses), exitCode, error);
   }

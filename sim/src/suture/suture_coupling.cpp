@@ -48,13 +48,6 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
   return tensions;
 }
 
-std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
-                              std::span<const Grip> grips) {
-  std::vector<Vec3> pulls;
-  for (const PierceTension& t : pierceTensions(model, state, grips)) pulls.push_back(t.pull);
-  return pulls;
-}
-
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
                                 const SutureModel& model, const SutureState& state,
                                 std::span<const Grip> grips, const CouplingParams& params) {

@@ -56,9 +56,9 @@ TEST(SutureCoupling, PiercePointsFollowTheTissueAndPullsBecomeControls) {
   // both sides taut by 0.1 mm straight up: the pull is 0.2 mm up, on the face's three nodes
   const Vec3 P = s.pierces[0].point;
   const Grip g[2] = {{0, P + Vec3(0, 0, 1.1)}, {20, P + Vec3(0, 0, 1.1)}};
-  const std::vector<Vec3> pulls = piercePulls(m, s, g);
-  ASSERT_EQ(pulls.size(), 1u);
-  EXPECT_LT((pulls[0] - Vec3(0, 0, 0.2)).norm(), 1e-12);
+  const std::vector<PierceTension> tensions = pierceTensions(m, s, g);
+  ASSERT_EQ(tensions.size(), 1u);
+  EXPECT_LT((tensions[0].pull - Vec3(0, 0, 0.2)).norm(), 1e-12);
   const SpringControls c = couplingControls(v.model, tx, m, s, g);
   ASSERT_EQ(c.size(), 3);
   for (int k = 0; k < 3; ++k)

@@ -59,11 +59,6 @@ struct PierceTension {
 std::vector<PierceTension> pierceTensions(const SutureModel& model, const SutureState& state,
                                           std::span<const Grip> grips);
 
-/// pull(P) of the header essay for each pierce, in SutureState::pierces order (mm); zero for
-/// passive pierces (on the needle) and for pierces with no over-long side.
-std::vector<Vec3> piercePulls(const SutureModel& model, const SutureState& state,
-                              std::span<const Grip> grips);
-
 /// The control-node targets that let the tissue solver follow the suture's pull (nodes sorted,
 /// fixed nodes left out); empty when nothing pulls.
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
