@@ -141,15 +141,17 @@ inline std::vector<std::uint8_t> packed(igtl::MessageBase* message) {
 }
 
 /// A server that sends `poses` to its first client as TRANSFORM messages from "Stylus",
-/// 0.01 s apart, then keeps the link up until it is destroyed: for tests in which the client
-/// must stop by itself or be killed.
+/// 0.01 s apart from 1 s of source time on, then keeps the link up until it is destroyed: for
+/// tests in which the client must stop by itself or be killed. (Not from 0: a zero timestamp
+/// means "none" in OpenIGTLink, and the client then stamps the pose with its own receive time,
+/// which on a loaded machine can fall after the next pose's 0.01 s and reject it.)
 class PoseStreamingServer {
  public:
   explicit PoseStreamingServer(std::vector<Eigen::Matrix4d> poses) : poses_(std::move(poses)) {
     server_.run([this, released = release_.get_future().share()](IgtlTestServer& s) {
       if (!s.accept()) return;
       for (std::size_t i = 0; i < poses_.size(); ++i)
-        s.send(transformMessage("Stylus", poses_[i], 0.01 * static_cast<double>(i)));
+        s.send(transformMessage("Stylus", poses_[i], 1.0 + 0.01 * static_cast<double>(i)));
       released.wait();
       s.closeClient();
     });
