@@ -43,7 +43,7 @@ void settle() {
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
 }
 
-bool save(QWidget& widget, const QString& file, QStringList& written) {
+bool saveScreenShot(QWidget& widget, const QString& file, QStringList& written) {
   settle();
   if (!widget.grab().save(file)) return false;
   written << file;
@@ -73,12 +73,12 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   QStringList written;
 
   // sign-in, then the lessons of the first trainee
-  if (!save(window, out.filePath(QStringLiteral("sign-in.png")), written)) return fail(QStringLiteral("sign-in"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("sign-in.png")), written)) return fail(QStringLiteral("sign-in"));
   auto* list = window.signInPage()->findChild<QListWidget*>(QStringLiteral("traineeList"));
   list->setCurrentRow(0);
   window.signInPage()->findChild<QPushButton*>(QStringLiteral("signInButton"))->click();
   window.lessonListPage()->selectRow(1);
-  if (!save(window, out.filePath(QStringLiteral("lessons.png")), written)) return fail(QStringLiteral("lessons"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("lessons.png")), written)) return fail(QStringLiteral("lessons"));
 
   // lesson 2 in Learn mode, the shipped stitch replayed up to the first pierce
   sim::Recording stitch;
@@ -92,17 +92,17 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   const int frames = window.viewport()->framesDrawn();
   window.viewport()->update();
   if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
-  if (!save(window, out.filePath(QStringLiteral("attempt-learn.png")), written)) return fail(QStringLiteral("attempt"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("attempt-learn.png")), written)) return fail(QStringLiteral("attempt"));
 
   // the whole stitch, scored
   attempt->replay(stitch.frames, true);
   if (!waitFor(attempt, &AttemptPage::finished, 120000)) return fail(QStringLiteral("results"));
-  if (!save(window, out.filePath(QStringLiteral("results.png")), written)) return fail(QStringLiteral("results"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("results.png")), written)) return fail(QStringLiteral("results"));
 
   // the settings dialog
   settings::SettingsDialog dialog(&window);
   dialog.show();
-  if (!save(dialog, out.filePath(QStringLiteral("settings.png")), written)) return fail(QStringLiteral("settings"));
+  if (!saveScreenShot(dialog, out.filePath(QStringLiteral("settings.png")), written)) return fail(QStringLiteral("settings"));
   dialog.close();
   window.close();
 

@@ -19,6 +19,7 @@
 
 #include "gui/snapshot_recycler.h"
 #include "microsim/sim/scene/input_frame.h"
+#include "tracking/input_frame_metatype.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/render_snapshot.h"
 #include "microsim/sim/scene/scene.h"

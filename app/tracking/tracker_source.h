@@ -5,6 +5,7 @@
 // signals are emitted from it, so receivers in other threads get queued calls (Qt's
 // automatic connection), and status() is safe to call from any thread.
 
+#include "tracking/input_frame_metatype.h"
 #include "tracking/tracker_types.h"
 
 #include "microsim/sim/scene/input_frame.h"
@@ -58,7 +59,6 @@ class TrackerSource : public QObject {
 
 }  // namespace microsim::tracking
 
-Q_DECLARE_METATYPE(microsim::sim::InputFrame)
 Q_DECLARE_METATYPE(microsim::tracking::RawPose)
 Q_DECLARE_METATYPE(microsim::tracking::ChannelValue)
 Q_DECLARE_METATYPE(microsim::tracking::Rejection)

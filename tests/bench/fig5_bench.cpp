@@ -23,7 +23,7 @@ using namespace microsim::sim;
 
 namespace {
 
-constexpr double kCutout = 1e-3;  ///< mm, as in table1
+constexpr double kFig5Cutout = 1e-3;  ///< mm, as in table1
 
 /// qss as the paper tuned it: the largest step that still converges (ω = 1.5, see
 /// benchParams).
@@ -41,7 +41,7 @@ Errors errorAgainst(const Points& x, const Points& reference) {
   return {100.0 * d.maxCoeff(), 100.0 * d.mean()};
 }
 
-BenchRow row(const std::string& caseName, const std::string& metric, double value,
+BenchRow fig5Row(const std::string& caseName, const std::string& metric, double value,
              std::optional<double> paper = {}) {
   BenchRow r;
   r.bench = "fig5";
@@ -99,8 +99,8 @@ BenchReport runFig5(const BenchOptions& options) {
     paperCurve.x.push_back(model.nodeCount());
     paperCurve.y.push_back(10.0);
     const std::string name = std::to_string(n) + "^3, 5 cycles, k = 10";
-    report.rows.push_back(row(name, "max error (worst cycle; paper: at most ~10 %)", worstMax, 10.0));
-    report.rows.push_back(row(name, "mean error (worst cycle)", worstMean));
+    report.rows.push_back(fig5Row(name, "max error (worst cycle; paper: at most ~10 %)", worstMax, 10.0));
+    report.rows.push_back(fig5Row(name, "mean error (worst cycle)", worstMean));
   }
   sizePlot.curves = {worstMaxCurve, worstMeanCurve, lastMaxCurve, lastMeanCurve, paperCurve};
   report.plots.push_back(sizePlot);
@@ -117,13 +117,13 @@ BenchReport runFig5(const BenchOptions& options) {
       BenchCurve curve{std::to_string(n) + "^3 " + (c == 0 ? "without cutout" : "with cutout"), {}, {}};
       for (int k : {5, 10, 20, 50, 100}) {
         SolverParams params = qssParams();
-        params.cutout = c == 0 ? 0.0 : kCutout;
+        params.cutout = c == 0 ? 0.0 : kFig5Cutout;
         SpringState state = SpringState::atRest(model);
         SolveBudget budget;
         budget.maxIterations = k;
         makeSolver("qss", params)->solve(model, state, controls, budget);
         const double e = errorAgainst(state.x, reference.x).maxPercent;
-        report.rows.push_back(row(curve.label + ", k = " + std::to_string(k), "max error", e));
+        report.rows.push_back(fig5Row(curve.label + ", k = " + std::to_string(k), "max error", e));
         curve.x.push_back(k);
         curve.y.push_back(e);
       }

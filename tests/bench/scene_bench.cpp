@@ -26,15 +26,15 @@ namespace microsim::bench {
 
 namespace {
 
-const std::string kRoot = MICROSIM_SOURCE_DIR;
+const std::string kSceneBenchRoot = MICROSIM_SOURCE_DIR;
 
 void runCase(const std::string& name, const std::string& sceneFile, bool shipped, sim::StepMode mode,
              BenchReport& report) {
-  sim::SceneDefLoad load = sim::loadSceneDef(kRoot + "/resources/scenes/" + sceneFile);
+  sim::SceneDefLoad load = sim::loadSceneDef(kSceneBenchRoot + "/resources/scenes/" + sceneFile);
   if (!std::holds_alternative<sim::SceneDef>(load)) return;
   sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
   sim::Recording rec;
-  if (!shipped || !sim::readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok())
+  if (!shipped || !sim::readRecording(kSceneBenchRoot + "/resources/recordings/stitch.msrec", rec).ok())
     rec = sim::scriptedStitch(def);
   const int nodes = def.tissue.model.nodeCount();
   sim::Scene scene(std::move(def), mode, cpuSeconds);

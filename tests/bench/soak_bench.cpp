@@ -29,7 +29,7 @@ namespace microsim::bench {
 
 namespace {
 
-const std::string kRoot = MICROSIM_SOURCE_DIR;
+const std::string kSoakBenchRoot = MICROSIM_SOURCE_DIR;
 
 double residentMiB() {
   std::ifstream statm("/proc/self/statm");
@@ -49,10 +49,10 @@ bool finiteState(const sim::Scene& scene) {
 
 BenchReport runSoak(const BenchOptions& options) {
   BenchReport report;
-  sim::SceneDefLoad load = sim::loadSceneDef(kRoot + "/resources/scenes/anastomosis.json");
+  sim::SceneDefLoad load = sim::loadSceneDef(kSoakBenchRoot + "/resources/scenes/anastomosis.json");
   sim::Recording rec;
   if (!std::holds_alternative<sim::SceneDef>(load) ||
-      !sim::readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok() || rec.frames.empty()) {
+      !sim::readRecording(kSoakBenchRoot + "/resources/recordings/stitch.msrec", rec).ok() || rec.frames.empty()) {
     report.rows.push_back({"soak", "setup", "scene or recording unreadable", 1.0, "error", {}, {}, {}});
     return report;
   }

@@ -8,7 +8,7 @@
 namespace microsim::gui {
 
 namespace {
-QVector3D toQt(const sim::Vec3& v) {
+QVector3D cameraVector(const sim::Vec3& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
 }
 }  // namespace
@@ -16,9 +16,9 @@ QVector3D toQt(const sim::Vec3& v) {
 MicroscopeCamera::MicroscopeCamera() { reset(sim::CameraDef{}); }
 
 void MicroscopeCamera::reset(const sim::CameraDef& def) {
-  target_ = toQt(def.target);
-  const QVector3D eye = toQt(def.eye);
-  worldUp_ = toQt(def.up).normalized();
+  target_ = cameraVector(def.target);
+  const QVector3D eye = cameraVector(def.eye);
+  worldUp_ = cameraVector(def.up).normalized();
   distance_ = std::max(1e-3f, (eye - target_).length());
   // QQuaternion::fromDirection builds the rotation whose +z is the given direction
   orientation_ = QQuaternion::fromDirection((eye - target_).normalized(), worldUp_);

@@ -91,7 +91,7 @@ bool fillDemoHistory(assessment::HistoryDatabase& db, qint64& instructor) {
 }
 
 // grab() renders the widget itself, so only pending layouts and resizes need to run
-bool save(QWidget& widget, const QString& file, QStringList& written) {
+bool saveReviewShot(QWidget& widget, const QString& file, QStringList& written) {
   QCoreApplication::sendPostedEvents();
   QCoreApplication::processEvents();
   if (!widget.grab().save(file)) return false;
@@ -116,15 +116,15 @@ QStringList writeReviewScreenshots(const QString& directory) {
     page.show();
     const QDir out(directory);
     const qint64 ana = page.shownTrainees().value(0).id;
-    if (!save(page, out.filePath(QStringLiteral("review-grid.png")), written)) return {};
+    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-grid.png")), written)) return {};
     page.showTrainee(ana, QStringLiteral("02_needle_entry"));
-    if (!save(page, out.filePath(QStringLiteral("review-history.png")), written)) return {};
+    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-history.png")), written)) return {};
     const auto attempts = db.attempts({instructor, assessment::Role::Instructor}, ana);
     if (attempts.size() > 2) {
       db.annotate({instructor, assessment::Role::Instructor}, attempts[2].id,
                   QStringLiteral("Better: the needle now enters almost perpendicular. Watch the bite length."));
       page.showAttempt(attempts[2].id);
-      if (!save(page, out.filePath(QStringLiteral("review-attempt.png")), written)) return {};
+      if (!saveReviewShot(page, out.filePath(QStringLiteral("review-attempt.png")), written)) return {};
     }
   }
   return written;

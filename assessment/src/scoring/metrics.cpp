@@ -1,4 +1,5 @@
 #include "microsim/assessment/scoring/metrics.h"
+#include "scoring/not_measured.h"
 
 #include <algorithm>
 #include <array>
@@ -8,8 +9,6 @@
 namespace microsim::assessment {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 constexpr std::array<MetricInfo, 22> kCatalogue{{
     {"time", "s"},

@@ -1,4 +1,5 @@
 #include "microsim/assessment/scoring/motion_metrics.h"
+#include "scoring/not_measured.h"
 
 #include <algorithm>
 #include <array>
@@ -8,8 +9,6 @@
 namespace microsim::assessment {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool bothTracked(const MotionSample& a, const MotionSample& b) { return a.tracked && b.tracked; }
 

@@ -1,4 +1,5 @@
 #include "microsim/assessment/scoring/pierce_metrics.h"
+#include "scoring/not_measured.h"
 
 #include <cmath>
 #include <limits>
@@ -7,8 +8,6 @@
 namespace microsim::assessment {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool throughWall(sim::VesselSurface in, sim::VesselSurface out) {
   using S = sim::VesselSurface;

@@ -29,7 +29,7 @@ std::string index(const std::string& path, std::size_t i) {
 }
 
 // typed reads that keep the first failure with its field path
-class Reader {
+class RubricReader {
  public:
   bool fail(K kind, const std::string& path) {
     if (!error_) error_ = RubricError{kind, {}, 0, 0, path};
@@ -225,7 +225,7 @@ std::variant<Rubric, RubricError> parseRubric(std::string_view text, const std::
   // then meaning
   Rubric rubric;
   rubric.file = file;
-  Reader reader;
+  RubricReader reader;
   bool ok = false;
   try {
     ok = reader.rubric(doc, rubric);

@@ -31,9 +31,9 @@ QJsonValue optionalNumber(const std::optional<double>& v) { return v ? QJsonValu
 QJsonArray vector3(const Eigen::Vector3d& v) { return QJsonArray{v.x(), v.y(), v.z()}; }
 
 // reads fields of one object and remembers the first one at fault, by its path
-class Reader {
+class ProfileReader {
  public:
-  Reader(const QJsonObject& o, QString prefix, std::optional<ProfileJsonError>& error)
+  ProfileReader(const QJsonObject& o, QString prefix, std::optional<ProfileJsonError>& error)
       : o_(o), prefix_(std::move(prefix)), error_(error) {}
 
   bool fail(ProfileJsonProblem p, const QString& key) {
@@ -98,7 +98,7 @@ class Reader {
 };
 
 bool readHand(const QJsonObject& o, const QString& prefix, ProfileHand& hand, std::optional<ProfileJsonError>& error) {
-  Reader r(o, prefix, error);
+  ProfileReader r(o, prefix, error);
   QString instrument;
   if (!r.string(QStringLiteral("device"), hand.device) || !r.string(QStringLiteral("instrument"), instrument)) return false;
   bool known = false;
@@ -179,7 +179,7 @@ std::variant<SetupProfile, ProfileJsonError> importProfileJson(const QByteArray&
 
   SetupProfile p;
   std::optional<ProfileJsonError> error;
-  Reader r(root, QString(), error);
+  ProfileReader r(root, QString(), error);
 
   // who, when
   QString at;
@@ -219,7 +219,7 @@ std::variant<SetupProfile, ProfileJsonError> importProfileJson(const QByteArray&
   r.error(QStringLiteral("tre_mm"), p.treMm);
   QJsonObject scaling;
   if (r.object(QStringLiteral("motion_scaling"), scaling)) {
-    Reader s(scaling, QStringLiteral("motion_scaling."), error);
+    ProfileReader s(scaling, QStringLiteral("motion_scaling."), error);
     if (s.number(QStringLiteral("hand_per_scene"), p.handPerScene) && !(p.handPerScene > 0.0))
       s.fail(ProfileJsonProblem::OutOfRange, QStringLiteral("hand_per_scene"));
     s.vector(QStringLiteral("anchor_mm"), p.scalingAnchor);

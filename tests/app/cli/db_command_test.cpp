@@ -24,7 +24,7 @@ CliRun runCliWithInput(const QStringList& args, const QByteArray& input) {
   return runCli(args, 120000, input);
 }
 
-QByteArray readAll(const QString& path) {
+QByteArray readDbFile(const QString& path) {
   QFile f(path);
   return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
@@ -58,7 +58,7 @@ TEST(DbCommand, AddListBackupRestoreAndExport) {
   r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("list-trainees"), QStringLiteral("--json"), json} + on);
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.out.contains(evil));
-  const QJsonArray people = QJsonDocument::fromJson(readAll(json)).array();
+  const QJsonArray people = QJsonDocument::fromJson(readDbFile(json)).array();
   ASSERT_EQ(people.size(), 2);
   EXPECT_EQ(people[0].toObject()[QStringLiteral("name")].toString().toStdString(), "Ines");
   EXPECT_EQ(people[0].toObject()[QStringLiteral("role")].toString().toStdString(), "instructor");
@@ -82,7 +82,7 @@ TEST(DbCommand, AddListBackupRestoreAndExport) {
                                   QStringLiteral("Ines")} + on,
                       "s3cret-enough\n");
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  const QList<QByteArray> lines = readAll(csv).split('\n');
+  const QList<QByteArray> lines = readDbFile(csv).split('\n');
   ASSERT_EQ(lines.size(), 3);
   EXPECT_TRUE(lines[1].contains("x'); DROP TABLE attempts;--,PGY-1,01_bite,learn,")) << lines[1].toStdString();
 
@@ -110,7 +110,7 @@ TEST(DbCommand, DamagedFileGivesAClearMessageAndStaysAsItWas) {
   const CliRun r = runCli({QStringLiteral("db"), QStringLiteral("list-trainees"), QStringLiteral("--db"), db});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("not a microsim database or is damaged"))) << r.err.toStdString();
-  EXPECT_EQ(readAll(db), garbage);
+  EXPECT_EQ(readDbFile(db), garbage);
 }
 
 TEST(DbCommand, BackupOntoAnExistingFileSaysSoAndLeavesItUntouched) {
@@ -130,7 +130,7 @@ TEST(DbCommand, BackupOntoAnExistingFileSaysSoAndLeavesItUntouched) {
   EXPECT_TRUE(r.err.contains(QStringLiteral("%1 exists already; it was left untouched").arg(target))) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("Choose another name"))) << r.err.toStdString();
   EXPECT_FALSE(r.err.contains(QStringLiteral("could not be"))) << r.err.toStdString();
-  EXPECT_EQ(readAll(target), before);
+  EXPECT_EQ(readDbFile(target), before);
   EXPECT_FALSE(QFile::exists(target + QStringLiteral(".part")));
 
   // another name works

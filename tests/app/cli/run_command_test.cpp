@@ -3,6 +3,7 @@
 // and broken scenes fail with a message naming the file, and no crash.
 #include "support/golden_stitch.h"
 #include "support/cli_runner.h"
+#include "support/shipped_files.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -17,13 +18,12 @@ namespace {
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
-const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
-const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
-const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
+using microsim::testing::kShippedScene;
+using microsim::testing::kShippedStitch;
 // tests/sim/scene/stitch_test.cpp holds the same value
 const QString kGolden = QString::fromLatin1(microsim::testing::kGoldenStitchHashText);
 
-QJsonObject readJson(const QString& path) {
+QJsonObject readRunJson(const QString& path) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) return {};
   return QJsonDocument::fromJson(f.readAll()).object();
@@ -32,11 +32,11 @@ QJsonObject readJson(const QString& path) {
 TEST(RunCommand, TheShippedStitchReplaysToTheGoldenHashWithFourPierces) {
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("run.json"));
-  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"),
-                           kStitch, QStringLiteral("--json"), out});
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"),
+                           kShippedStitch, QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.out.contains(kGolden)) << r.out.toStdString();
-  const QJsonObject doc = readJson(out);
+  const QJsonObject doc = readRunJson(out);
   EXPECT_EQ(doc.value(QStringLiteral("hash")).toString(), kGolden);
   int pierces = 0;
   for (const QJsonValue& v : doc.value(QStringLiteral("events")).toArray()) {
@@ -56,21 +56,21 @@ TEST(RunCommand, ARecordedRunReplaysToTheSameHash) {
   const QString rec = dir.filePath(QStringLiteral("a.msrec"));
   const QString first = dir.filePath(QStringLiteral("first.json"));
   const QString second = dir.filePath(QStringLiteral("second.json"));
-  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--script"),
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--script"),
                      QStringLiteral("stitch"), QStringLiteral("--frames"), QStringLiteral("120"),
                      QStringLiteral("--record"), rec, QStringLiteral("--json"), first});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), rec,
+  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), rec,
               QStringLiteral("--json"), second});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  EXPECT_EQ(readJson(first).value(QStringLiteral("steps")).toInt(), 120);
-  EXPECT_EQ(readJson(first).value(QStringLiteral("hash")).toString(),
-            readJson(second).value(QStringLiteral("hash")).toString());
+  EXPECT_EQ(readRunJson(first).value(QStringLiteral("steps")).toInt(), 120);
+  EXPECT_EQ(readRunJson(first).value(QStringLiteral("hash")).toString(),
+            readRunJson(second).value(QStringLiteral("hash")).toString());
 }
 
 TEST(RunCommand, ADamagedRecordingFailsWithAClearMessage) {
   QTemporaryDir dir;
-  QFile in(kStitch);
+  QFile in(kShippedStitch);
   ASSERT_TRUE(in.open(QIODevice::ReadOnly));
   QByteArray bytes = in.readAll();
   bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x40);
@@ -79,7 +79,7 @@ TEST(RunCommand, ADamagedRecordingFailsWithAClearMessage) {
   ASSERT_TRUE(out.open(QIODevice::WriteOnly));
   out.write(bytes);
   out.close();
-  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), damaged});
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), damaged});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(damaged)) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("damaged recording"))) << r.err.toStdString();

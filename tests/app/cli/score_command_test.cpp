@@ -7,6 +7,7 @@
 
 #include "microsim/assessment/storage/history_database.h"
 #include "microsim/sim/scene/recording.h"
+#include "support/shipped_files.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -21,31 +22,31 @@ namespace {
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
-const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
-const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
-const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
-const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
+using microsim::testing::kShippedRubric;
+using microsim::testing::kShippedScene;
+using microsim::testing::kShippedStitch;
+using microsim::testing::kSourceRoot;
 constexpr double kStitchScore = microsim::testing::kGoldenStitchScoreSingleStitch;
 
-QJsonObject readJson(const QString& path) {
+QJsonObject readScoreJson(const QString& path) {
   QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) return {};
   return QJsonDocument::fromJson(f.readAll()).object();
 }
 
 CliRun score(const QStringList& extra) {
-  return runCli(QStringList{QStringLiteral("score"), QStringLiteral("--rubric"), kRubric} + extra);
+  return runCli(QStringList{QStringLiteral("score"), QStringLiteral("--rubric"), kShippedRubric} + extra);
 }
 
 TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("score.json"));
-  const CliRun r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+  const CliRun r = score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                           QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.out.contains(QStringLiteral("66.4"))) << r.out.toStdString();
   EXPECT_TRUE(r.out.contains(QStringLiteral("entry_angle.too_oblique"))) << r.out.toStdString();
-  const QJsonObject doc = readJson(out);
+  const QJsonObject doc = readScoreJson(out);
   EXPECT_NEAR(doc.value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
   EXPECT_FALSE(doc.value(QStringLiteral("passed")).toBool());
   EXPECT_FALSE(doc.value(QStringLiteral("truncated")).toBool());
@@ -61,11 +62,11 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
 
   // the same every run
   const QString again = dir.filePath(QStringLiteral("again.json"));
-  ASSERT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+  ASSERT_EQ(score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                    QStringLiteral("--json"), again})
                 .exitCode,
             0);
-  EXPECT_EQ(readJson(again).value(QStringLiteral("score")).toDouble(), doc.value(QStringLiteral("score")).toDouble());
+  EXPECT_EQ(readScoreJson(again).value(QStringLiteral("score")).toDouble(), doc.value(QStringLiteral("score")).toDouble());
 }
 
 // The GUI's lesson flow (tests/app/gui/lesson_flow_test.cpp) is held to the same value, so
@@ -74,26 +75,26 @@ TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("score.json"));
   const CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--rubric"),
-                           kRoot + QStringLiteral("/resources/rubrics/02_needle_entry.json"),
-                           QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+                           kSourceRoot + QStringLiteral("/resources/rubrics/02_needle_entry.json"),
+                           QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                            QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.out.contains(QStringLiteral("62.3"))) << r.out.toStdString();
-  EXPECT_NEAR(readJson(out).value(QStringLiteral("score")).toDouble(),
+  EXPECT_NEAR(readScoreJson(out).value(QStringLiteral("score")).toDouble(),
               microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }
 
 TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
   // the shipped stitch names no scene
-  CliRun r = score({QStringLiteral("--recording"), kStitch});
+  CliRun r = score({QStringLiteral("--recording"), kShippedStitch});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_TRUE(r.err.contains(QStringLiteral("--scene"))) << r.err.toStdString();
 
   // a copy whose metadata names it scores the same
   QTemporaryDir dir;
   microsim::sim::Recording rec;
-  ASSERT_TRUE(microsim::sim::readRecording(kStitch.toStdString(), rec).ok());
-  rec.metadata = "{\"scene\": \"" + kScene.toStdString() + "\"}";
+  ASSERT_TRUE(microsim::sim::readRecording(kShippedStitch.toStdString(), rec).ok());
+  rec.metadata = "{\"scene\": \"" + kShippedScene.toStdString() + "\"}";
   const auto bytes = microsim::sim::encodeRecording(rec);
   const QString named = dir.filePath(QStringLiteral("named.msrec"));
   QFile f(named);
@@ -103,7 +104,7 @@ TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
   const QString out = dir.filePath(QStringLiteral("named.json"));
   r = score({QStringLiteral("--recording"), named, QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  EXPECT_NEAR(readJson(out).value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
+  EXPECT_NEAR(readScoreJson(out).value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
 
   // a truncated copy scores what it holds and says so
   const QString cut = dir.filePath(QStringLiteral("cut.msrec"));
@@ -115,18 +116,18 @@ TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
   r = score({QStringLiteral("--recording"), cut, QStringLiteral("--json"), cutOut});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("unfinished"))) << r.err.toStdString();
-  EXPECT_TRUE(readJson(cutOut).value(QStringLiteral("truncated")).toBool());
+  EXPECT_TRUE(readScoreJson(cutOut).value(QStringLiteral("truncated")).toBool());
 }
 
 TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {
   QTemporaryDir dir;
   const QString db = dir.filePath(QStringLiteral("history.sqlite"));
   const QString out = dir.filePath(QStringLiteral("score.json"));
-  const CliRun r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), kScene,
+  const CliRun r = score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                           QStringLiteral("--db"), db, QStringLiteral("--trainee"), QStringLiteral("Ada"),
                           QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  const qint64 id = static_cast<qint64>(readJson(out).value(QStringLiteral("attempt_id")).toDouble());
+  const qint64 id = static_cast<qint64>(readScoreJson(out).value(QStringLiteral("attempt_id")).toDouble());
   EXPECT_GT(id, 0);
 
   microsim::assessment::HistoryDatabase history;
@@ -153,25 +154,25 @@ TEST(ScoreCommand, BadInputsFailWithAMessage) {
   f.write("{\"id\": \"x\", \"version\": 1, \"pass_mark\": 50,\n \"metrics\": [{\"key\": \"nope\", \"weight\": 1, "
           "\"target\": 0, \"tolerance\": 1, \"limit\": 2, \"bad\": \"both\"}]}");
   f.close();
-  CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"),
-                     kScene, QStringLiteral("--rubric"), broken});
+  CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"),
+                     kShippedScene, QStringLiteral("--rubric"), broken});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(broken + QStringLiteral(":2:"))) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("unknown metric (field metrics[0].key)"))) << r.err.toStdString();
 
-  r = score({QStringLiteral("--recording"), kScene, QStringLiteral("--scene"), kScene});
+  r = score({QStringLiteral("--recording"), kShippedScene, QStringLiteral("--scene"), kShippedScene});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("not a microsim recording"))) << r.err.toStdString();
 
-  r = score({QStringLiteral("--recording"), kStitch, QStringLiteral("--scene"), dir.filePath(QStringLiteral("no.json"))});
+  r = score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), dir.filePath(QStringLiteral("no.json"))});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("no.json"))) << r.err.toStdString();
 
-  EXPECT_EQ(runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch}).exitCode, 2);
-  EXPECT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--db"), dir.filePath(QStringLiteral("h.sqlite"))})
+  EXPECT_EQ(runCli({QStringLiteral("score"), QStringLiteral("--recording"), kShippedStitch}).exitCode, 2);
+  EXPECT_EQ(score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--db"), dir.filePath(QStringLiteral("h.sqlite"))})
                 .exitCode,
             2);
-  EXPECT_EQ(score({QStringLiteral("--recording"), kStitch, QStringLiteral("--mode"), QStringLiteral("exam")}).exitCode, 2);
+  EXPECT_EQ(score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--mode"), QStringLiteral("exam")}).exitCode, 2);
 }
 
 }  // namespace

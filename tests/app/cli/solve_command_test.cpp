@@ -23,7 +23,7 @@ QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArra
   return path;
 }
 
-QJsonObject readJson(const QString& path) {
+QJsonObject readSolveJson(const QString& path) {
   QFile f(path);
   EXPECT_TRUE(f.open(QIODevice::ReadOnly)) << path.toStdString();
   return QJsonDocument::fromJson(f.readAll()).object();
@@ -48,7 +48,7 @@ TEST(SolveCommand, HangingSpringReachesTheClosedFormStretch) {
          QStringLiteral("--tolerance"), QStringLiteral("1e-12"), QStringLiteral("--json"), out});
     ASSERT_EQ(r.exitCode, 0) << solver << " " << r.err.toStdString();
     EXPECT_TRUE(r.out.contains(QStringLiteral("status"))) << r.out.toStdString();
-    const QJsonObject doc = readJson(out);
+    const QJsonObject doc = readSolveJson(out);
     EXPECT_EQ(doc.value(QStringLiteral("solver")).toString(), QLatin1String(solver));
     EXPECT_EQ(doc.value(QStringLiteral("status")).toString(), QStringLiteral("converged"))
         << solver;
@@ -75,7 +75,7 @@ TEST(SolveCommand, ChainBetweenFixedAndControlledNodes) {
                            QStringLiteral("--tolerance"), QStringLiteral("1e-12"),
                            QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  const QJsonObject doc = readJson(out);
+  const QJsonObject doc = readSolveJson(out);
   EXPECT_EQ(doc.value(QStringLiteral("solver")).toString(), QStringLiteral("newton"));
   EXPECT_NEAR(position(doc, 1).at(0).toDouble(), 1.75, 1e-9);
   EXPECT_NEAR(position(doc, 2).at(0).toDouble(), 3.0, 1e-12);
@@ -90,7 +90,7 @@ TEST(SolveCommand, LatticeProtocol) {
               QStringLiteral("10"), QStringLiteral("--cutout"), QStringLiteral("0.001"),
               QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  const QJsonObject doc = readJson(out);
+  const QJsonObject doc = readSolveJson(out);
   EXPECT_EQ(doc.value(QStringLiteral("positions")).toArray().size(), 64);
   EXPECT_EQ(doc.value(QStringLiteral("iterations")).toInt(), 10);
   EXPECT_EQ(doc.value(QStringLiteral("status")).toString(), QStringLiteral("iteration-limit"));

@@ -6,6 +6,7 @@
 
 #include "lesson/lesson.h"
 #include "microsim/sim/scene/recording.h"
+#include "support/shipped_files.h"
 
 #include <QFile>
 #include <QProcess>
@@ -20,12 +21,11 @@ namespace {
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
-const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
-const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
-const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
-const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
+using microsim::testing::kShippedRubric;
+using microsim::testing::kShippedScene;
+using microsim::testing::kShippedStitch;
 
-QByteArray readAll(const QString& path) {
+QByteArray readFaultFile(const QString& path) {
   QFile f(path);
   return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
@@ -68,10 +68,10 @@ TEST(BadFiles, AFolderWhereAFileBelongsIsNamed) {
   const QString folder = dir.path();
   expectRefused(runCli({QStringLiteral("run"), QStringLiteral("--scene"), folder}), folder,
                 QStringLiteral("cannot open the scene file"));
-  expectRefused(runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), folder}),
+  expectRefused(runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), folder}),
                 folder, QStringLiteral("cannot open the recording"));
-  expectRefused(runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--rubric"),
-                        folder, QStringLiteral("--scene"), kScene}),
+  expectRefused(runCli({QStringLiteral("score"), QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--rubric"),
+                        folder, QStringLiteral("--scene"), kShippedScene}),
                 folder, QStringLiteral("cannot open the rubric file"));
   expectRefused(runCli({QStringLiteral("db"), QStringLiteral("migrate"), QStringLiteral("--db"), folder}), folder,
                 QStringLiteral("cannot open"));
@@ -81,7 +81,7 @@ TEST(BadFiles, AFolderWhereAFileBelongsIsNamed) {
   expectRefused(runCli({QStringLiteral("export"), QStringLiteral("--lattice"), QStringLiteral("2"),
                         QStringLiteral("--json"), folder}),
                 folder, QStringLiteral("cannot write"));
-  expectRefused(runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--frames"),
+  expectRefused(runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--frames"),
                         QStringLiteral("2"), QStringLiteral("--record"), folder}),
                 folder, QStringLiteral("cannot open the recording"));
 
@@ -99,22 +99,22 @@ TEST(BadFiles, AnUnreadableFileIsNamedAndKeptAsItWas) {
   const QString scene = dir.filePath(QStringLiteral("scene.json"));
   const QString recording = dir.filePath(QStringLiteral("stitch.msrec"));
   const QString rubric = dir.filePath(QStringLiteral("rubric.json"));
-  ASSERT_TRUE(QFile::copy(kScene, scene));
-  ASSERT_TRUE(QFile::copy(kStitch, recording));
-  ASSERT_TRUE(QFile::copy(kRubric, rubric));
+  ASSERT_TRUE(QFile::copy(kShippedScene, scene));
+  ASSERT_TRUE(QFile::copy(kShippedStitch, recording));
+  ASSERT_TRUE(QFile::copy(kShippedRubric, rubric));
   for (const QString& f : {scene, recording, rubric})
     ASSERT_TRUE(QFile::setPermissions(f, QFileDevice::ReadOwner | QFileDevice::WriteOwner));
-  const QByteArray sceneBytes = readAll(scene);
+  const QByteArray sceneBytes = readFaultFile(scene);
 
   expectRefused(runCliAsUser({QStringLiteral("run"), QStringLiteral("--scene"), scene}), scene,
                 QStringLiteral("cannot open the scene file"));
-  expectRefused(runCliAsUser({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"),
+  expectRefused(runCliAsUser({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"),
                               recording}),
                 recording, QStringLiteral("cannot open the recording"));
-  expectRefused(runCliAsUser({QStringLiteral("score"), QStringLiteral("--recording"), kStitch,
-                              QStringLiteral("--rubric"), rubric, QStringLiteral("--scene"), kScene}),
+  expectRefused(runCliAsUser({QStringLiteral("score"), QStringLiteral("--recording"), kShippedStitch,
+                              QStringLiteral("--rubric"), rubric, QStringLiteral("--scene"), kShippedScene}),
                 rubric, QStringLiteral("cannot open the rubric file"));
-  EXPECT_EQ(readAll(scene), sceneBytes);
+  EXPECT_EQ(readFaultFile(scene), sceneBytes);
 }
 
 TEST(BadFiles, MeshesAssimpCannotReadNameTheFieldAndTheReason) {
@@ -134,12 +134,12 @@ TEST(BadFiles, MeshesAssimpCannotReadNameTheFieldAndTheReason) {
 
 TEST(BadFiles, ARecordingCutShortReplaysItsFramesAndANewerOneIsRefused) {
   QTemporaryDir dir;
-  const QByteArray good = readAll(kStitch);
+  const QByteArray good = readFaultFile(kShippedStitch);
   ASSERT_GT(good.size(), 1000);
 
   const QString cut = dir.filePath(QStringLiteral("cut.msrec"));
   write(cut, good.left(good.size() * 2 / 3));
-  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), cut});
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), cut});
   EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("unfinished recording"))) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("complete frame"))) << r.err.toStdString();
@@ -148,9 +148,9 @@ TEST(BadFiles, ARecordingCutShortReplaysItsFramesAndANewerOneIsRefused) {
   newer[8] = static_cast<char>(microsim::sim::kRecordingVersion + 1);
   const QString future = dir.filePath(QStringLiteral("newer.msrec"));
   write(future, newer);
-  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--input"), future});
+  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), future});
   expectRefused(r, future, QStringLiteral("recording from a newer version"));
-  EXPECT_EQ(readAll(future), newer);
+  EXPECT_EQ(readFaultFile(future), newer);
 }
 
 }  // namespace

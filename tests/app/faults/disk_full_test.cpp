@@ -7,6 +7,7 @@
 #include "tracking/pose_stream.h"
 
 #include "microsim/assessment/storage/history_database.h"
+#include "support/shipped_files.h"
 
 #include <QFile>
 #include <QProcess>
@@ -26,10 +27,9 @@ using microsim::assessment::Role;
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
-const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
-const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
-const QString kStitch = kRoot + QStringLiteral("/resources/recordings/stitch.msrec");
-const QString kRubric = kRoot + QStringLiteral("/resources/rubrics/03_single_stitch.json");
+using microsim::testing::kShippedRubric;
+using microsim::testing::kShippedScene;
+using microsim::testing::kShippedStitch;
 const QString kFull = QStringLiteral("/dev/full");
 
 class DiskFull : public ::testing::Test {
@@ -66,7 +66,7 @@ void expectFullDiskError(const CliRun& r) {
 
 TEST_F(DiskFull, JsonOutputOfEveryCommandIsAnError) {
   const QStringList commands[] = {
-      {QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--frames"), QStringLiteral("3"),
+      {QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--frames"), QStringLiteral("3"),
        QStringLiteral("--json"), kFull},
       {QStringLiteral("solve"), QStringLiteral("--lattice"), QStringLiteral("3"), QStringLiteral("--iterations"),
        QStringLiteral("5"), QStringLiteral("--json"), kFull},
@@ -82,8 +82,8 @@ TEST_F(DiskFull, JsonOutputOfEveryCommandIsAnError) {
 
 TEST_F(DiskFull, ScoreJsonIsAnErrorAndTheAttemptIsStillStored) {
   const QString db = makeHistory();
-  const CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kStitch, QStringLiteral("--rubric"),
-                           kRubric, QStringLiteral("--scene"), kScene, QStringLiteral("--db"), db,
+  const CliRun r = runCli({QStringLiteral("score"), QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--rubric"),
+                           kShippedRubric, QStringLiteral("--scene"), kShippedScene, QStringLiteral("--db"), db,
                            QStringLiteral("--trainee"), QStringLiteral("Ada"), QStringLiteral("--json"), kFull});
   expectFullDiskError(r);
   // the score went to the history before the JSON was attempted
@@ -96,7 +96,7 @@ TEST_F(DiskFull, ScoreJsonIsAnErrorAndTheAttemptIsStillStored) {
 }
 
 TEST_F(DiskFull, RunRecordFailsBeforeTheFirstStep) {
-  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kScene, QStringLiteral("--frames"),
+  const CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--frames"),
                            QStringLiteral("3"), QStringLiteral("--record"), kFull});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write the recording"))) << r.err.toStdString();

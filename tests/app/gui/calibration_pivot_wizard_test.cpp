@@ -14,7 +14,7 @@
 namespace microsim::gui {
 namespace {
 
-tracking::ReplayConfig fast() {
+tracking::ReplayConfig fastPivotReplay() {
   tracking::ReplayConfig c;
   c.pace = tracking::ReplayPace::AsFastAsPossible;
   c.batch = 8;
@@ -24,7 +24,7 @@ tracking::ReplayConfig fast() {
 TEST(CalibrationPivotWizard, ReplayedPivotReachesAnAcceptedTipWithinATenthOfAMillimetre) {
   const Eigen::Vector3d tip(1.5, -2.0, 148.0);
   const Eigen::Vector3d pivot(40.0, -12.0, 220.0);
-  tracking::ReplaySource source(testing::pivotStream("Stylus", tip, pivot, 1500, 35.0, 0.05), fast());
+  tracking::ReplaySource source(testing::pivotStream("Stylus", tip, pivot, 1500, 35.0, 0.05), fastPivotReplay());
 
   calibration::PivotCollectorOptions options;
   options.targetPoses = 120;
@@ -61,7 +61,7 @@ TEST(CalibrationPivotWizard, ReplayedPivotReachesAnAcceptedTipWithinATenthOfAMil
 
 TEST(CalibrationPivotWizard, AToolSpunAboutItsAxisNeverCompletes) {
   // tilts of 3°: plenty of poses, not enough spread
-  tracking::ReplaySource source(testing::pivotStream("Stylus", {0, 0, 150}, {0, 0, 0}, 600, 3.0, 0.0), fast());
+  tracking::ReplaySource source(testing::pivotStream("Stylus", {0, 0, 150}, {0, 0, 0}, 600, 3.0, 0.0), fastPivotReplay());
   calibration::PivotCollectorOptions options;
   options.targetPoses = 20;
   options.minStepDeg = 0.2;
@@ -79,7 +79,7 @@ TEST(CalibrationPivotWizard, AToolSpunAboutItsAxisNeverCompletes) {
 
 TEST(CalibrationPivotWizard, ABadFitIsRefusedAndCollectedAgain) {
   // 2 mm of noise: the RMS error is above the 0.5 mm threshold
-  tracking::ReplaySource source(testing::pivotStream("Stylus", {0, 0, 150}, {0, 0, 0}, 1000, 35.0, 2.0), fast());
+  tracking::ReplaySource source(testing::pivotStream("Stylus", {0, 0, 150}, {0, 0, 0}, 1000, 35.0, 2.0), fastPivotReplay());
   calibration::PivotCollectorOptions options;
   options.targetPoses = 60;
   PivotWizard wizard(&source, options);

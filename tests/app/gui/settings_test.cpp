@@ -3,6 +3,7 @@
 #include "gui/settings/tunables.h"
 
 #include "microsim/sim/scene/scene.h"
+#include "support/shipped_files.h"
 
 #include <QComboBox>
 #include <QSettings>
@@ -14,7 +15,7 @@
 namespace microsim::gui::settings {
 namespace {
 
-const QString kScene = QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
+using microsim::testing::kShippedScene;
 
 TEST(Settings, TheDialogHasAnEditorForEveryTunable) {
   QSettings().clear();
@@ -67,11 +68,11 @@ TEST(Settings, StoresWhatTheDialogShowsAndChecksRanges) {
 
 TEST(Settings, TheSolverOverrideGivesALoadableSceneWithThatSolver) {
   QTemporaryDir dir;
-  EXPECT_EQ(applySolverOverride(kScene, {QStringLiteral("scene"), 0}, dir.path()), kScene);
+  EXPECT_EQ(applySolverOverride(kShippedScene, {QStringLiteral("scene"), 0}, dir.path()), kShippedScene);
   QString error;
-  const QString patched = applySolverOverride(kScene, {QStringLiteral("newton"), 12}, dir.path(), &error);
+  const QString patched = applySolverOverride(kShippedScene, {QStringLiteral("newton"), 12}, dir.path(), &error);
   ASSERT_FALSE(patched.isEmpty()) << error.toStdString();
-  EXPECT_NE(patched, kScene);
+  EXPECT_NE(patched, kShippedScene);
   auto opened = sim::openScene(patched.toStdString());
   ASSERT_TRUE(std::holds_alternative<std::unique_ptr<sim::Scene>>(opened))
       << std::get<sim::SceneError>(opened).field;

@@ -3,6 +3,7 @@
 #include "gui/simulation_runner.h"
 
 #include "microsim/sim/scene/recording.h"
+#include "support/shipped_files.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -15,15 +16,15 @@
 namespace microsim::gui {
 namespace {
 
-const QString kRoot = QStringLiteral(MICROSIM_SOURCE_DIR);
-const QString kScene = kRoot + QStringLiteral("/resources/scenes/anastomosis.json");
-const std::string kStitch = std::string(MICROSIM_SOURCE_DIR) + "/resources/recordings/stitch.msrec";
+using microsim::testing::kShippedScene;
+using microsim::testing::kShippedStitch;
+using microsim::testing::kSourceRoot;
 // the golden hash of stitch.msrec on anastomosis.json (tests/sim/scene/stitch_test.cpp)
 using microsim::testing::kGoldenStitchHash;
 
 std::vector<sim::InputFrame> stitchFrames() {
   sim::Recording rec;
-  const sim::RecordingStatus status = sim::readRecording(kStitch, rec);
+  const sim::RecordingStatus status = sim::readRecording(kShippedStitch.toStdString(), rec);
   EXPECT_TRUE(status.ok());
   return rec.frames;
 }
@@ -32,7 +33,7 @@ TEST(SimulationRunner, ReplayOfTheStitchGivesTheGoldenHashAndFourPierces) {
   QTemporaryDir dir;
   const QString recording = dir.filePath(QStringLiteral("again.msrec"));
   SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
+  ASSERT_TRUE(runner.load(kShippedScene, sim::StepMode::Deterministic));
   ASSERT_NE(runner.sceneDef(), nullptr);
   ASSERT_NE(runner.latestSnapshot(), nullptr);
   EXPECT_EQ(runner.latestSnapshot()->steps, 0);
@@ -66,7 +67,7 @@ TEST(SimulationRunner, ReplayOfTheStitchGivesTheGoldenHashAndFourPierces) {
 
 TEST(SimulationRunner, LiveStepsWithTheLatestSubmittedFrame) {
   SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::RealTime));
+  ASSERT_TRUE(runner.load(kShippedScene, sim::StepMode::RealTime));
   testing::QueuedSignalSpy snapshots(&runner, &SimulationRunner::snapshotReady);
   runner.start();
   EXPECT_TRUE(runner.isRunning());
@@ -102,7 +103,7 @@ TEST(SimulationRunner, LiveStepsWithTheLatestSubmittedFrame) {
 TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
   {
     auto runner = std::make_unique<SimulationRunner>();
-    ASSERT_TRUE(runner->load(kScene, sim::StepMode::RealTime));
+    ASSERT_TRUE(runner->load(kShippedScene, sim::StepMode::RealTime));
     testing::QueuedSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
     runner->start();
     ASSERT_TRUE(snapshots.wait(10000));
@@ -110,7 +111,7 @@ TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
   }
   {
     auto runner = std::make_unique<SimulationRunner>();
-    ASSERT_TRUE(runner->load(kScene, sim::StepMode::Deterministic));
+    ASSERT_TRUE(runner->load(kShippedScene, sim::StepMode::Deterministic));
     testing::QueuedSignalSpy snapshots(runner.get(), &SimulationRunner::snapshotReady);
     runner->replay(stitchFrames());
     ASSERT_TRUE(snapshots.wait(10000));
@@ -121,7 +122,7 @@ TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
 
 TEST(SimulationRunner, ASnapshotHeldByTheReaderStaysUntouched) {
   SimulationRunner runner;
-  ASSERT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
+  ASSERT_TRUE(runner.load(kShippedScene, sim::StepMode::Deterministic));
   const auto held = runner.latestSnapshot();
   const std::vector<float> positions = held->tissuePositions;
   testing::QueuedSignalSpy finished(&runner, &SimulationRunner::replayFinished);
@@ -138,7 +139,7 @@ TEST(SimulationRunner, ASnapshotHeldByTheReaderStaysUntouched) {
 TEST(SimulationRunner, AMissingSceneFailsWithTheLoadersError) {
   SimulationRunner runner;
   sim::SceneError error;
-  EXPECT_FALSE(runner.load(kRoot + QStringLiteral("/resources/scenes/no_such.json"), sim::StepMode::RealTime, &error));
+  EXPECT_FALSE(runner.load(kSourceRoot + QStringLiteral("/resources/scenes/no_such.json"), sim::StepMode::RealTime, &error));
   EXPECT_FALSE(error.file.empty());
   EXPECT_FALSE(runner.isLoaded());
   EXPECT_EQ(runner.sceneDef(), nullptr);

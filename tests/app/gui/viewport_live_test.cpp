@@ -13,6 +13,7 @@
 #include <QTimer>
 
 #include "app/gui/core_profile.h"
+#include "support/shipped_files.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@
 namespace microsim::gui {
 namespace {
 
-const QString kScene = QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
+using microsim::testing::kShippedScene;
 
 // the right forceps' position in the snapshot the viewport last drew
 Eigen::Vector3d drawnRightForceps(const Viewport& view) {
@@ -36,7 +37,7 @@ struct SceneView {
   std::unique_ptr<Viewport> view;
 
   explicit SceneView(sim::StepMode mode) {
-    EXPECT_TRUE(runner.load(kScene, mode));
+    EXPECT_TRUE(runner.load(kShippedScene, mode));
     view = std::make_unique<Viewport>();
     view->resize(320, 200);
     view->setRunner(&runner);

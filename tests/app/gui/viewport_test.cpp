@@ -3,6 +3,7 @@
 #include "app/gui/core_profile.h"
 #include "gui/simulation_runner.h"
 #include "tracking/manual_source.h"
+#include "support/shipped_files.h"
 
 #include <QImage>
 #include <QSignalSpy>
@@ -16,7 +17,7 @@
 namespace microsim::gui {
 namespace {
 
-const QString kScene = QStringLiteral(MICROSIM_SOURCE_DIR "/resources/scenes/anastomosis.json");
+using microsim::testing::kShippedScene;
 
 bool reddish(QRgb c) { return qRed(c) > qGreen(c) + 50 && qRed(c) > 90; }
 bool drape(QRgb c) { return qGreen(c) > qRed(c) + 10 && qBlue(c) > qRed(c) + 10; }
@@ -30,7 +31,7 @@ struct Fixture {
 
   Fixture() {
     requestCoreProfile();
-    EXPECT_TRUE(runner.load(kScene, sim::StepMode::Deterministic));
+    EXPECT_TRUE(runner.load(kShippedScene, sim::StepMode::Deterministic));
     view = std::make_unique<Viewport>();
     view->resize(800, 600);
     view->setRunner(&runner);

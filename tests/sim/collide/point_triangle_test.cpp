@@ -12,7 +12,7 @@ using Eigen::Vector3d;
 using brute::hullDistance;
 using brute::latticePoint;
 
-void expectMatchesBruteForce(const Vector3d& p, const Vector3d& a, const Vector3d& b,
+void expectPointTriangleMatchesBruteForce(const Vector3d& p, const Vector3d& a, const Vector3d& b,
                              const Vector3d& c) {
   const PointTriangleClosest got = closestPointTriangle(p, a, b, c);
   const double want = hullDistance({p}, {a, b, c});
@@ -28,21 +28,21 @@ void expectMatchesBruteForce(const Vector3d& p, const Vector3d& a, const Vector3
 TEST(PointTriangle, RandomCasesMatchBruteForce) {
   std::mt19937 rng(7);
   for (int i = 0; i < 3000; ++i)
-    expectMatchesBruteForce(2.0 * cubePoint(rng), cubePoint(rng), cubePoint(rng), cubePoint(rng));
+    expectPointTriangleMatchesBruteForce(2.0 * cubePoint(rng), cubePoint(rng), cubePoint(rng), cubePoint(rng));
 }
 
 TEST(PointTriangle, LatticeCasesMatchBruteForce) {
   // coplanar points, points on edges and corners, zero-area triangles
   std::mt19937 rng(8);
   for (int i = 0; i < 3000; ++i)
-    expectMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
+    expectPointTriangleMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
                             latticePoint(rng));
 }
 
 TEST(PointTriangle, DegenerateTriangles) {
   const Vector3d o(0, 0, 0), x(1, 0, 0), y(0, 1, 0);
   // collinear corners: the closest point of the longest edge
-  expectMatchesBruteForce(Vector3d(0.5, 1, 0), o, x, Vector3d(2, 0, 0));
+  expectPointTriangleMatchesBruteForce(Vector3d(0.5, 1, 0), o, x, Vector3d(2, 0, 0));
   // all corners coincide
   const PointTriangleClosest point = closestPointTriangle(Vector3d(0, 0, 2), x, x, x);
   EXPECT_DOUBLE_EQ(point.distance, std::sqrt(5.0));

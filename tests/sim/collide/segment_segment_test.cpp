@@ -12,7 +12,7 @@ using Eigen::Vector3d;
 using brute::hullDistance;
 using brute::latticePoint;
 
-void expectMatchesBruteForce(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0,
+void expectSegmentSegmentMatchesBruteForce(const Vector3d& p0, const Vector3d& p1, const Vector3d& q0,
                              const Vector3d& q1) {
   const SegmentClosest got = closestSegmentSegment(p0, p1, q0, q1);
   const double want = hullDistance({p0, p1}, {q0, q1});
@@ -30,14 +30,14 @@ void expectMatchesBruteForce(const Vector3d& p0, const Vector3d& p1, const Vecto
 TEST(SegmentSegment, RandomCasesMatchBruteForce) {
   std::mt19937 rng(11);
   for (int i = 0; i < 4000; ++i)
-    expectMatchesBruteForce(cubePoint(rng), cubePoint(rng), cubePoint(rng), cubePoint(rng));
+    expectSegmentSegmentMatchesBruteForce(cubePoint(rng), cubePoint(rng), cubePoint(rng), cubePoint(rng));
 }
 
 TEST(SegmentSegment, LatticeCasesMatchBruteForce) {
   // parallel, collinear, crossing, touching and zero-length segments
   std::mt19937 rng(12);
   for (int i = 0; i < 4000; ++i)
-    expectMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
+    expectSegmentSegmentMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
                             latticePoint(rng));
 }
 

@@ -13,7 +13,7 @@ using brute::hullDistance;
 using brute::latticePoint;
 
 // returns whether it hit, for coverage counts
-bool expectMatchesBruteForce(const Vector3d& p, const Vector3d& q, const Vector3d& a,
+bool expectSegmentTriangleMatchesBruteForce(const Vector3d& p, const Vector3d& q, const Vector3d& a,
                              const Vector3d& b, const Vector3d& c) {
   const std::optional<SegmentTriangleHit> hit = intersectSegmentTriangle(p, q, a, b, c);
   const double want = hullDistance({p, q}, {a, b, c});
@@ -39,7 +39,7 @@ TEST(SegmentTriangle, RandomCasesMatchBruteForce) {
   std::mt19937 rng(21);
   int hits = 0;
   for (int i = 0; i < 4000; ++i)
-    hits += expectMatchesBruteForce(1.5 * cubePoint(rng), 1.5 * cubePoint(rng), cubePoint(rng),
+    hits += expectSegmentTriangleMatchesBruteForce(1.5 * cubePoint(rng), 1.5 * cubePoint(rng), cubePoint(rng),
                                     cubePoint(rng), cubePoint(rng));
   EXPECT_GT(hits, 100);
   EXPECT_LT(hits, 3900);
@@ -50,7 +50,7 @@ TEST(SegmentTriangle, LatticeCasesMatchBruteForce) {
   std::mt19937 rng(22);
   int hits = 0;
   for (int i = 0; i < 6000; ++i)
-    hits += expectMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
+    hits += expectSegmentTriangleMatchesBruteForce(latticePoint(rng), latticePoint(rng), latticePoint(rng),
                                     latticePoint(rng), latticePoint(rng));
   EXPECT_GT(hits, 300);
 }

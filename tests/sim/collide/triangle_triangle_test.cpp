@@ -12,7 +12,7 @@ using Eigen::Vector3d;
 using brute::hullDistance;
 using brute::latticePoint;
 
-bool expectMatchesBruteForce(const std::array<Vector3d, 6>& v) {
+bool expectTriangleTriangleMatchesBruteForce(const std::array<Vector3d, 6>& v) {
   const bool got = trianglesIntersect(v[0], v[1], v[2], v[3], v[4], v[5]);
   const double want = hullDistance({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
   EXPECT_EQ(got, want < 1e-9) << "distance " << want << ": " << v[0].transpose() << " | "
@@ -30,7 +30,7 @@ TEST(TriangleTriangle, RandomCasesMatchBruteForce) {
   int hits = 0;
   for (int i = 0; i < 3000; ++i) {
     const Vector3d shift = 0.8 * cubePoint(rng);
-    hits += expectMatchesBruteForce({cubePoint(rng), cubePoint(rng), cubePoint(rng),
+    hits += expectTriangleTriangleMatchesBruteForce({cubePoint(rng), cubePoint(rng), cubePoint(rng),
                                      shift + cubePoint(rng), shift + cubePoint(rng),
                                      shift + cubePoint(rng)});
   }
@@ -45,7 +45,7 @@ TEST(TriangleTriangle, LatticeCasesMatchBruteForce) {
   for (int i = 0; i < 3000; ++i) {
     std::array<Vector3d, 6> v;
     for (Vector3d& p : v) p = latticePoint(rng);
-    hits += expectMatchesBruteForce(v);
+    hits += expectTriangleTriangleMatchesBruteForce(v);
   }
   EXPECT_GT(hits, 300);
 }
@@ -57,7 +57,7 @@ TEST(TriangleTriangle, CoplanarFlatCases) {
   for (int i = 0; i < 2000; ++i) {
     std::array<Vector3d, 6> v;
     for (Vector3d& p : v) p = Vector3d(pick(rng), pick(rng), 0);
-    expectMatchesBruteForce(v);
+    expectTriangleTriangleMatchesBruteForce(v);
   }
 }
 

@@ -15,10 +15,10 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kRoot = MICROSIM_SOURCE_DIR;
+const std::string kSnapshotTestRoot = MICROSIM_SOURCE_DIR;
 
 SceneDef anastomosis() {
-  SceneDefLoad load = loadSceneDef(kRoot + "/resources/scenes/anastomosis.json");
+  SceneDefLoad load = loadSceneDef(kSnapshotTestRoot + "/resources/scenes/anastomosis.json");
   EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
   return std::get<SceneDef>(std::move(load));
 }

@@ -14,7 +14,7 @@ namespace microsim::sim {
 namespace {
 
 // advances a fixed step on every reading: each tissue iteration costs one step
-struct FakeClock {
+struct FakeSceneClock {
   double step = 1e-3;  ///< s per reading
   double t = 0.0;
   double operator()() { return t += step; }
@@ -33,7 +33,7 @@ SceneDef pulledLattice(const std::string& solver, double budgetMs) {
 }
 
 StepReport firstStep(const std::string& solver, double budgetMs, StepMode mode) {
-  FakeClock fake;
+  FakeSceneClock fake;
   Scene scene(pulledLattice(solver, budgetMs), mode, [&fake] { return fake(); });
   return scene.step(InputFrame{});
 }

@@ -8,10 +8,10 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
+const std::string kShippedScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
 const std::string kMeshes = std::string(MICROSIM_SOURCE_DIR) + "/resources/meshes";
 
-SceneError errorOf(const std::string& text) {
+SceneError sceneDefErrorOf(const std::string& text) {
   SceneDefLoad load = parseSceneDef(text, "test.json", kMeshes);
   EXPECT_TRUE(std::holds_alternative<SceneError>(load));
   return std::holds_alternative<SceneError>(load) ? std::get<SceneError>(load) : SceneError{};
@@ -20,7 +20,7 @@ SceneError errorOf(const std::string& text) {
 TEST(SceneDef, EveryShippedSceneLoads) {
   for (const char* name : {"anastomosis.json", "fine_anastomosis.json", "single_vessel.json",
                            "lattice.json", "spring_mesh.json"}) {
-    SceneDefLoad load = loadSceneDef(kScenes + name);
+    SceneDefLoad load = loadSceneDef(kShippedScenes + name);
     if (auto* e = std::get_if<SceneError>(&load))
       ADD_FAILURE() << name << ": kind " << int(e->kind) << " at " << e->line << ":" << e->column
                     << " field " << e->field;
@@ -28,7 +28,7 @@ TEST(SceneDef, EveryShippedSceneLoads) {
 }
 
 TEST(SceneDef, TheAnastomosisSceneHasTwoVesselEndsTwoForcepsAndANeedle) {
-  SceneDefLoad load = loadSceneDef(kScenes + "anastomosis.json");
+  SceneDefLoad load = loadSceneDef(kShippedScenes + "anastomosis.json");
   ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
   const SceneDef& s = std::get<SceneDef>(load);
   ASSERT_EQ(s.vessels.size(), 2u);
@@ -60,7 +60,7 @@ TEST(SceneDef, OnlyDeclaredToolsExist) {
 }
 
 TEST(SceneDef, MalformedJsonNamesLineAndColumn) {
-  const SceneError e = errorOf("{\n  \"objects\": [\n    {\"type\": \"lattice\",, }\n  ]\n}");
+  const SceneError e = sceneDefErrorOf("{\n  \"objects\": [\n    {\"type\": \"lattice\",, }\n  ]\n}");
   EXPECT_EQ(e.kind, SceneErrorKind::MalformedJson);
   EXPECT_EQ(e.file, "test.json");
   EXPECT_EQ(e.line, 3);
@@ -68,7 +68,7 @@ TEST(SceneDef, MalformedJsonNamesLineAndColumn) {
 }
 
 TEST(SceneDef, AnUnknownToolFieldIsNamedWithItsPosition) {
-  const SceneError e = errorOf(
+  const SceneError e = sceneDefErrorOf(
       "{\"objects\": [{\"type\": \"lattice\", \"size\": [2, 2, 2]}],\n"
       " \"tools\": {\"forceps\": [\n"
       "   {\"hand\": \"left\", \"mesh\": \"forceps_jaw.obj\", \"colour\": 1}]}}");
@@ -79,7 +79,7 @@ TEST(SceneDef, AnUnknownToolFieldIsNamedWithItsPosition) {
 }
 
 TEST(SceneDef, AMissingJawMeshIsAMeshImportError) {
-  const SceneError e = errorOf(
+  const SceneError e = sceneDefErrorOf(
       "{\"objects\": [{\"type\": \"lattice\", \"size\": [2, 2, 2]}],\n"
       " \"tools\": {\"forceps\": [{\"hand\": \"right\", \"mesh\": \"no_such_jaw.obj\"}]}}");
   EXPECT_EQ(e.kind, SceneErrorKind::MeshImport);
@@ -90,7 +90,7 @@ TEST(SceneDef, AMissingJawMeshIsAMeshImportError) {
 }
 
 TEST(SceneDef, ObjectErrorsFromTheSpringSceneLoaderPointIntoThisFile) {
-  const SceneError e = errorOf(
+  const SceneError e = sceneDefErrorOf(
       "{\"objects\": [\n"
       "  {\"type\": \"lattice\", \"size\": [2, 2, 2]},\n"
       "  {\"type\": \"spring-mesh\", \"nodes\": [[0,0,0], [1,0,0]], \"links\": [[0, 7, 5]]}]}");
@@ -130,7 +130,7 @@ TEST(SceneDef, BadValuesAreRejectedByField) {
        "objects[0].type"},
   };
   for (const Case& c : cases) {
-    const SceneError e = errorOf(c.text);
+    const SceneError e = sceneDefErrorOf(c.text);
     EXPECT_EQ(e.kind, c.kind) << c.text;
     EXPECT_EQ(e.field, c.field) << c.text;
   }

@@ -12,13 +12,13 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kScenes = std::string(MICROSIM_TEST_DATA_DIR) + "/scenes/";
+const std::string kTestScenes = std::string(MICROSIM_TEST_DATA_DIR) + "/scenes/";
 
 const SpringScene& sceneOf(const SceneLoad& r) {
   return std::get<SpringScene>(r);
 }
 
-SceneError errorOf(const std::string& text) {
+SceneError springSceneErrorOf(const std::string& text) {
   const SceneLoad r = parseSpringScene(text, "t.json");
   EXPECT_TRUE(std::holds_alternative<SceneError>(r)) << text;
   return std::holds_alternative<SceneError>(r) ? std::get<SceneError>(r) : SceneError{};
@@ -31,7 +31,7 @@ std::string mesh(const std::string& links, const std::string& extra = "") {
 }
 
 TEST(SpringScene, TwoNodeFileAsInDesign) {
-  const SceneLoad r = loadSpringScene(kScenes + "two_node.json");
+  const SceneLoad r = loadSpringScene(kTestScenes + "two_node.json");
   ASSERT_TRUE(std::holds_alternative<SpringScene>(r));
   const SpringScene& s = sceneOf(r);
   EXPECT_EQ(s.model.nodeCount(), 2);
@@ -51,7 +51,7 @@ TEST(SpringScene, TwoNodeFileAsInDesign) {
 }
 
 TEST(SpringScene, EveryObjectTypeMergesInOrder) {
-  const SceneLoad r = loadSpringScene(kScenes + "mixed.json");
+  const SceneLoad r = loadSpringScene(kTestScenes + "mixed.json");
   ASSERT_TRUE(std::holds_alternative<SpringScene>(r))
       << static_cast<int>(std::get<SceneError>(r).kind) << " " << std::get<SceneError>(r).field;
   const SpringScene& s = sceneOf(r);
@@ -104,142 +104,142 @@ TEST(SpringScene, EveryObjectTypeMergesInOrder) {
 }
 
 TEST(SpringScene, MalformedFileNamesLinePositionAndField) {
-  const SceneLoad r = loadSpringScene(kScenes + "malformed.json");
+  const SceneLoad r = loadSpringScene(kTestScenes + "malformed.json");
   ASSERT_TRUE(std::holds_alternative<SceneError>(r));
   const SceneError& e = std::get<SceneError>(r);
   EXPECT_EQ(e.kind, SceneErrorKind::IndexOutOfRange);
   EXPECT_EQ(e.field, "objects[0].links[1][1]");
-  EXPECT_EQ(e.file, kScenes + "malformed.json");
+  EXPECT_EQ(e.file, kTestScenes + "malformed.json");
   EXPECT_EQ(e.line, 3);
   EXPECT_EQ(e.column, 31);
 }
 
 TEST(SpringScene, MissingFile) {
-  const SceneLoad r = loadSpringScene(kScenes + "no_such_scene.json");
+  const SceneLoad r = loadSpringScene(kTestScenes + "no_such_scene.json");
   ASSERT_TRUE(std::holds_alternative<SceneError>(r));
   EXPECT_EQ(std::get<SceneError>(r).kind, SceneErrorKind::FileNotFound);
 }
 
 TEST(SpringScene, MalformedJson) {
-  const SceneError e = errorOf("{\"objects\": [\n  {\"type\": \"lattice\",, }]}");
+  const SceneError e = springSceneErrorOf("{\"objects\": [\n  {\"type\": \"lattice\",, }]}");
   EXPECT_EQ(e.kind, SceneErrorKind::MalformedJson);
   EXPECT_EQ(e.line, 2);
   EXPECT_EQ(e.column, 22);
-  EXPECT_EQ(errorOf("").kind, SceneErrorKind::MalformedJson);
-  EXPECT_EQ(errorOf("{\"objects\": [NaN]}").kind, SceneErrorKind::MalformedJson);
+  EXPECT_EQ(springSceneErrorOf("").kind, SceneErrorKind::MalformedJson);
+  EXPECT_EQ(springSceneErrorOf("{\"objects\": [NaN]}").kind, SceneErrorKind::MalformedJson);
 }
 
 TEST(SpringScene, StructureErrors) {
-  EXPECT_EQ(errorOf("[]").kind, SceneErrorKind::WrongType);
-  EXPECT_EQ(errorOf("{}").kind, SceneErrorKind::MissingField);
-  EXPECT_EQ(errorOf("{}").field, "objects");
-  EXPECT_EQ(errorOf(R"({"objects": []})").kind, SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(R"({"objects": {}})").kind, SceneErrorKind::WrongType);
-  EXPECT_EQ(errorOf(R"({"objects": [3]})").field, "objects[0]");
-  const SceneError unknownTop = errorOf(R"({"objects": [], "gravty": [0,0,0]})");
+  EXPECT_EQ(springSceneErrorOf("[]").kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf("{}").kind, SceneErrorKind::MissingField);
+  EXPECT_EQ(springSceneErrorOf("{}").field, "objects");
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": []})").kind, SceneErrorKind::InvalidValue);
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": {}})").kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [3]})").field, "objects[0]");
+  const SceneError unknownTop = springSceneErrorOf(R"({"objects": [], "gravty": [0,0,0]})");
   EXPECT_EQ(unknownTop.kind, SceneErrorKind::UnknownField);
   EXPECT_EQ(unknownTop.field, "gravty");
 
-  const SceneError type = errorOf(R"({"objects": [{"type": "sphere"}]})");
+  const SceneError type = springSceneErrorOf(R"({"objects": [{"type": "sphere"}]})");
   EXPECT_EQ(type.kind, SceneErrorKind::UnknownObjectType);
   EXPECT_EQ(type.field, "objects[0].type");
   EXPECT_EQ(type.column, 23);
-  EXPECT_EQ(errorOf(R"({"objects": [{"size": [3,3,3]}]})").kind, SceneErrorKind::MissingField);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": 4}]})").kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"size": [3,3,3]}]})").kind, SceneErrorKind::MissingField);
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": 4}]})").kind, SceneErrorKind::WrongType);
 
   const SceneError unknown =
-      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stifness": 4}]})");
+      springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stifness": 4}]})");
   EXPECT_EQ(unknown.kind, SceneErrorKind::UnknownField);
   EXPECT_EQ(unknown.field, "objects[0].stifness");
 }
 
 TEST(SpringScene, MissingAndIllTypedFields) {
   const SceneError noLinks =
-      errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0,0]]}]})");
+      springSceneErrorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0,0]]}]})");
   EXPECT_EQ(noLinks.kind, SceneErrorKind::MissingField);
   EXPECT_EQ(noLinks.field, "objects[0].links");
   EXPECT_EQ(noLinks.column, 14);  // at the object that lacks it
 
-  EXPECT_EQ(errorOf(mesh("[[0, 1]]")).field, "objects[0].links[0]");
-  EXPECT_EQ(errorOf(mesh("[[0, 1]]")).kind, SceneErrorKind::WrongType);
-  EXPECT_EQ(errorOf(mesh("[[0, 1, \"stiff\"]]")).field, "objects[0].links[0][2]");
-  EXPECT_EQ(errorOf(mesh("[[0.5, 1, 1]]")).kind, SceneErrorKind::WrongType);
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": 0)")).kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1]]")).field, "objects[0].links[0]");
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1]]")).kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, \"stiff\"]]")).field, "objects[0].links[0][2]");
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0.5, 1, 1]]")).kind, SceneErrorKind::WrongType);
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, 1]]", R"(, "fixed": 0)")).kind, SceneErrorKind::WrongType);
   const SceneError node =
-      errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0]], "links": []}]})");
+      springSceneErrorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0]], "links": []}]})");
   EXPECT_EQ(node.kind, SceneErrorKind::WrongType);
   EXPECT_EQ(node.field, "objects[0].nodes[0]");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": 3}]})").field, "objects[0].size");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,4]}]})").kind,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": 3}]})").field, "objects[0].size");
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,4]}]})").kind,
             SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [1,1,1]}]})").kind,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [1,1,1]}]})").kind,
             SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "fix_bottom": 1}]})").kind,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "fix_bottom": 1}]})").kind,
             SceneErrorKind::WrongType);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "surface-mesh"}]})").field, "objects[0].file");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "vessel", "preset": "huge"}]})").field,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "surface-mesh"}]})").field, "objects[0].file");
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "vessel", "preset": "huge"}]})").field,
             "objects[0].preset");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "vessel", "wall_thickness": 0.6}]})").field,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "vessel", "wall_thickness": 0.6}]})").field,
             "objects[0].wall_thickness");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "vessel", "direction": [0,0,0]}]})").kind,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "vessel", "direction": [0,0,0]}]})").kind,
             SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "grid", "cells": [0, 3]}]})").field,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "grid", "cells": [0, 3]}]})").field,
             "objects[0].cells[0]");
   EXPECT_EQ(
-      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"iterations": 0}})")
+      springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"iterations": 0}})")
           .field,
       "solver.iterations");
   EXPECT_EQ(
-      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"momentum": 1}})")
+      springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "solver": {"momentum": 1}})")
           .kind,
       SceneErrorKind::InvalidValue);
   EXPECT_EQ(
-      errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "gravity": [0, 0]})").field,
+      springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3]}], "gravity": [0, 0]})").field,
       "gravity");
 }
 
 TEST(SpringScene, LinkIndexErrors) {
-  const SceneError range = errorOf(mesh("[[0, 1, 1], [2, 3, 1]]"));
+  const SceneError range = springSceneErrorOf(mesh("[[0, 1, 1], [2, 3, 1]]"));
   EXPECT_EQ(range.kind, SceneErrorKind::IndexOutOfRange);
   EXPECT_EQ(range.field, "objects[0].links[1][1]");
-  EXPECT_EQ(errorOf(mesh("[[-1, 1, 1]]")).kind, SceneErrorKind::IndexOutOfRange);
-  const SceneError self = errorOf(mesh("[[0, 1, 1], [2, 2, 1]]"));
+  EXPECT_EQ(springSceneErrorOf(mesh("[[-1, 1, 1]]")).kind, SceneErrorKind::IndexOutOfRange);
+  const SceneError self = springSceneErrorOf(mesh("[[0, 1, 1], [2, 2, 1]]"));
   EXPECT_EQ(self.kind, SceneErrorKind::SelfLink);
   EXPECT_EQ(self.field, "objects[0].links[1]");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "fixed": [3])")).kind,
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, 1]]", R"(, "fixed": [3])")).kind,
             SceneErrorKind::IndexOutOfRange);
 }
 
 TEST(SpringScene, NegativeAndNonFiniteValues) {
-  const SceneError k = errorOf(mesh("[[0, 1, -1]]"));
+  const SceneError k = springSceneErrorOf(mesh("[[0, 1, -1]]"));
   EXPECT_EQ(k.kind, SceneErrorKind::NegativeValue);
   EXPECT_EQ(k.field, "objects[0].links[0][2]");
-  const SceneError rest = errorOf(mesh("[[0, 1, 1, -0.5]]"));
+  const SceneError rest = springSceneErrorOf(mesh("[[0, 1, 1, -0.5]]"));
   EXPECT_EQ(rest.kind, SceneErrorKind::NegativeValue);
   EXPECT_EQ(rest.field, "objects[0].links[0][3]");
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stiffness": -2}]})").kind,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [3,3,3], "stiffness": -2}]})").kind,
             SceneErrorKind::NegativeValue);
-  EXPECT_EQ(errorOf(R"({"objects": [{"type": "vessel", "k_layer": -50}]})").field,
+  EXPECT_EQ(springSceneErrorOf(R"({"objects": [{"type": "vessel", "k_layer": -50}]})").field,
             "objects[0].k_layer");
 
   // JSON has no NaN literal, but a number can overflow a double
-  const SceneError inf = errorOf(mesh("[[0, 1, 1e999]]"));
+  const SceneError inf = springSceneErrorOf(mesh("[[0, 1, 1e999]]"));
   EXPECT_EQ(inf.kind, SceneErrorKind::NonFinite);
   EXPECT_EQ(inf.field, "objects[0].links[0][2]");
   EXPECT_EQ(inf.column, static_cast<int>(mesh("[[0, 1, 1e999]]").find("1e999")) + 1);
   const SceneError pos =
-      errorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0,-1e400]], "links": []}]})");
+      springSceneErrorOf(R"({"objects": [{"type": "spring-mesh", "nodes": [[0,0,-1e400]], "links": []}]})");
   EXPECT_EQ(pos.kind, SceneErrorKind::NonFinite);
   EXPECT_EQ(pos.field, "objects[0].nodes[0][2]");
   EXPECT_EQ(
-      errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1, "displacement": [0, 1e999, 0]}])"))
+      springSceneErrorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1, "displacement": [0, 1e999, 0]}])"))
           .kind,
       SceneErrorKind::NonFinite);
 }
 
 TEST(SpringScene, AGeneratedMeshTooLargeToBuildIsRefusedByName) {
   // 200³ lattice nodes (8 million) would take gigabytes before anything could use them
-  const SceneError e = errorOf(R"({"objects": [{"type": "lattice", "size": [200, 200, 200]}]})");
+  const SceneError e = springSceneErrorOf(R"({"objects": [{"type": "lattice", "size": [200, 200, 200]}]})");
   EXPECT_EQ(e.kind, SceneErrorKind::InvalidValue);
   EXPECT_EQ(e.field, "objects[0].size");
 }
@@ -261,21 +261,21 @@ TEST(SpringScene, ADefaultGridMergesAfterOtherObjects) {
 }
 
 TEST(SpringScene, ControlErrors) {
-  const SceneError dup = errorOf(mesh(
+  const SceneError dup = springSceneErrorOf(mesh(
       "[[0, 1, 1]]",
       R"(, "controls": [{"node": 1, "displacement": [0,0,1]}, {"node": 1, "displacement": [0,0,2]}])"));
   EXPECT_EQ(dup.kind, SceneErrorKind::DuplicateControl);
   EXPECT_EQ(dup.field, "objects[0].controls[1].node");
   EXPECT_EQ(
-      errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 5, "displacement": [0,0,1]}])")).kind,
+      springSceneErrorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 5, "displacement": [0,0,1]}])")).kind,
       SceneErrorKind::IndexOutOfRange);
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1}])")).field,
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, 1]]", R"(, "controls": [{"node": 1}])")).field,
             "objects[0].controls[0].displacement");
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]",
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, 1]]",
                          R"(, "fixed": [1], "controls": [{"node": 1, "displacement": [0,0,1]}])"))
                 .kind,
             SceneErrorKind::InvalidValue);
-  EXPECT_EQ(errorOf(mesh("[[0, 1, 1]]",
+  EXPECT_EQ(springSceneErrorOf(mesh("[[0, 1, 1]]",
                          R"(, "controls": [{"node": 1, "displacement": [0,0,1], "force": 2}])"))
                 .field,
             "objects[0].controls[0].force");
@@ -289,7 +289,7 @@ TEST(SpringScene, ControlErrors) {
 
 TEST(SpringScene, SurfaceMeshFailureCarriesTheImporterError) {
   const SceneLoad r = parseSpringScene(
-      R"({"objects": [{"type": "surface-mesh", "file": "nowhere.obj"}]})", "s.json", kScenes);
+      R"({"objects": [{"type": "surface-mesh", "file": "nowhere.obj"}]})", "s.json", kTestScenes);
   ASSERT_TRUE(std::holds_alternative<SceneError>(r));
   const SceneError& e = std::get<SceneError>(r);
   EXPECT_EQ(e.kind, SceneErrorKind::MeshImport);

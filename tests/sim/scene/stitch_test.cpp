@@ -18,10 +18,10 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kRoot = MICROSIM_SOURCE_DIR;
+const std::string kStitchTestRoot = MICROSIM_SOURCE_DIR;
 
 SceneDef anastomosis() {
-  SceneDefLoad load = loadSceneDef(kRoot + "/resources/scenes/anastomosis.json");
+  SceneDefLoad load = loadSceneDef(kStitchTestRoot + "/resources/scenes/anastomosis.json");
   EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
   return std::get<SceneDef>(std::move(load));
 }
@@ -87,7 +87,7 @@ TEST(Stitch, TheSameFramesGiveTheSameBits) {
 
 TEST(Stitch, TheShippedRecordingIsTheScriptAndReplaysToTheGoldenHash) {
   const SceneDef def = anastomosis();
-  const std::string path = kRoot + "/resources/recordings/stitch.msrec";
+  const std::string path = kStitchTestRoot + "/resources/recordings/stitch.msrec";
   std::ifstream in(path, std::ios::binary);
   ASSERT_TRUE(in) << path;
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -12,13 +12,8 @@
 namespace microsim::sim {
 namespace {
 
+using testing::paramsFor;
 using testing::topPull;
-
-SolverParams paramsFor(const std::string& name) {
-  SolverParams p;
-  if (name == "rk4" || name == "implicit") p.damping = 6.0;
-  return p;
-}
 
 bool isQuasiStatic(const std::string& name) { return name != "rk4" && name != "implicit"; }
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 namespace microsim::sim::testing {
 
@@ -18,6 +19,13 @@ inline SpringModel chain(int links, double k = 10.0) {
   model.setFixed(0);
   model.finalize();
   return model;
+}
+
+/// Parameters each solver is tested with: the dynamic ones need damping to settle.
+inline SolverParams paramsFor(const std::string& name) {
+  SolverParams p;
+  if (name == "rk4" || name == "implicit") p.damping = 6.0;
+  return p;
 }
 
 /// The paper's protocol on an n³ box: the top middle node displaced by `d` in z.

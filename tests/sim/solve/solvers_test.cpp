@@ -11,15 +11,9 @@ namespace {
 
 using testing::chain;
 using testing::maxDistance;
+using testing::paramsFor;
 using testing::referenceOf;
 using testing::topPull;
-
-/// Parameters each solver is tested with: the dynamic ones need damping to settle.
-SolverParams paramsFor(const std::string& name) {
-  SolverParams p;
-  if (name == "rk4" || name == "implicit") p.damping = 6.0;
-  return p;
-}
 
 /// Iterations that take each solver close to equilibrium on the small meshes below.
 int manyIterations(const std::string& name) {

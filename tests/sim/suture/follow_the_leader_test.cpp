@@ -10,7 +10,7 @@
 namespace microsim::sim::suture {
 namespace {
 
-SutureDef threadOnly(int links, double length) {
+SutureDef threadOnlyDef(int links, double length) {
   SutureDef d;
   d.links = links;
   d.needleLinks = 0;
@@ -69,7 +69,7 @@ TEST(SutureModel, ChainPiecesSplitAtBrokenLinks) {
 }
 
 TEST(FollowTheLeader, EveryLinkKeepsItsLengthAfterAnyOneLeaderMove) {
-  const SutureModel m(threadOnly(200, 20.0));
+  const SutureModel m(threadOnlyDef(200, 20.0));
   const std::vector<std::uint8_t> alive(200, 1);
   const int nodes[] = {0, 1, 57, 100, 199, 200};
   const Vec3 moves[] = {Vec3(0.05, 0, 0), Vec3(3, -2, 1), Vec3(0, 0, 25), Vec3(-40, 10, 7)};
@@ -84,7 +84,7 @@ TEST(FollowTheLeader, EveryLinkKeepsItsLengthAfterAnyOneLeaderMove) {
 }
 
 TEST(FollowTheLeader, TheLeadersNeighbourGoesOnTheLineToItsOldPosition) {
-  const SutureModel m(threadOnly(4, 4.0));  // links of 1 mm, paper Fig. 6
+  const SutureModel m(threadOnlyDef(4, 4.0));  // links of 1 mm, paper Fig. 6
   Points x(3, 5);
   x << 0, 1, 2, 3, 4,
        0, 0, 0, 0, 0,
@@ -101,7 +101,7 @@ TEST(FollowTheLeader, TheLeadersNeighbourGoesOnTheLineToItsOldPosition) {
 }
 
 TEST(FollowTheLeader, BetweenTwoLeadersThePassesAreAveraged) {
-  const SutureModel m(threadOnly(60, 6.0));
+  const SutureModel m(threadOnlyDef(60, 6.0));
   const std::vector<std::uint8_t> alive(60, 1);
   const Points old = wavy(m);
   Points x = old;
@@ -126,7 +126,7 @@ TEST(FollowTheLeader, BetweenTwoLeadersThePassesAreAveraged) {
 }
 
 TEST(FollowTheLeader, CoincidentOldAndNewPositionsKeepTheChainFinite) {
-  const SutureModel m(threadOnly(5, 5.0));
+  const SutureModel m(threadOnlyDef(5, 5.0));
   Points x = Points::Zero(3, 6);  // every node at one point
   const Leader l{0, Vec3::Zero()};
   followTheLeader(m, x, std::vector<std::uint8_t>(5, 1), std::span<const Leader>(&l, 1));
@@ -135,7 +135,7 @@ TEST(FollowTheLeader, CoincidentOldAndNewPositionsKeepTheChainFinite) {
 }
 
 TEST(ChainProjection, RestoresExactLengthsBetweenTwoLeaders) {
-  const SutureModel m(threadOnly(100, 10.0));
+  const SutureModel m(threadOnlyDef(100, 10.0));
   const std::vector<std::uint8_t> alive(100, 1);
   Points x = wavy(m);
   const double span = (x.col(80) - x.col(20)).norm();
@@ -157,7 +157,7 @@ TEST(ChainProjection, RestoresExactLengthsBetweenTwoLeaders) {
 }
 
 TEST(ChainProjection, AnOverLongSpanSpreadsTheStretchWithoutNaN) {
-  const SutureModel m(threadOnly(10, 10.0));
+  const SutureModel m(threadOnlyDef(10, 10.0));
   const std::vector<std::uint8_t> alive(10, 1);
   Points x(3, 11);
   for (int i = 0; i <= 10; ++i) x.col(i) = Vec3(i, 0.01 * (i % 2), 0);
@@ -171,7 +171,7 @@ TEST(ChainProjection, AnOverLongSpanSpreadsTheStretchWithoutNaN) {
 }
 
 TEST(ChainProjection, BrokenLinksSeparateThePieces) {
-  const SutureModel m(threadOnly(6, 6.0));
+  const SutureModel m(threadOnlyDef(6, 6.0));
   std::vector<std::uint8_t> alive(6, 1);
   alive[2] = 0;
   Points x(3, 7);

@@ -30,7 +30,7 @@ ContactSurface cylinder(int segments = 32) {
 
 double radialDistance(const Vec3& p) { return std::hypot(p.x(), p.z()); }
 
-SutureModel threadOnly(int links, double length) {
+SutureModel threadOnlyModel(int links, double length) {
   SutureDef d;
   d.links = links;
   d.needleLinks = 0;
@@ -82,7 +82,7 @@ TEST(SutureContact, CapsuleFrictionHoldsSmallSlipAndLetsLargeSlipGo) {
 class DrapeTest : public ::testing::TestWithParam<std::string> {};
 
 TEST(SutureDrape, AStraightSutureDroppedOnACylinderDrapesAndComesToRest) {
-  SutureModel m = threadOnly(80, 6.0);
+  SutureModel m = threadOnlyModel(80, 6.0);
   m.gravity = Vec3(0, 0, -9810.0);
   SutureState s = SutureState::laidOut(m);
   for (int i = 0; i <= 80; ++i) s.x.col(i) = Vec3(-3.0 + 0.075 * i, 0.0, 1.1);
@@ -131,7 +131,7 @@ Points alongCurve(const std::vector<Vec3>& dense, int nodes, double d) {
 }
 
 TEST_P(DrapeTest, TwoTurnsAroundAJawStayWrappedWhileTheFreeEndIsPulled) {
-  const SutureModel m = threadOnly(200, 10.0);  // links of 0.05 mm
+  const SutureModel m = threadOnlyModel(200, 10.0);  // links of 0.05 mm
   const Capsule jaw{Vec3(0, 0, -1), Vec3(0, 0, 1), 0.1};
   const double wrapR = 0.11;
   // short tail, two helical turns (pitch 0.04 mm), then the long end leaving along +x
@@ -178,7 +178,7 @@ TEST_P(DrapeTest, TwoTurnsAroundAJawStayWrappedWhileTheFreeEndIsPulled) {
 
 TEST_P(DrapeTest, AStrandPulledDownAcrossAnotherStaysOnTop) {
   // two pieces (link 30 broken): A along x at z = 0, B along y above it at z = 0.3
-  const SutureModel m = threadOnly(61, 6.1);
+  const SutureModel m = threadOnlyModel(61, 6.1);
   SutureState s = SutureState::laidOut(m);
   for (int i = 0; i <= 30; ++i) s.x.col(i) = Vec3(-1.5 + 0.1 * i, 0, 0);
   for (int i = 31; i <= 61; ++i) s.x.col(i) = Vec3(0.0, -1.5 + 0.1 * (i - 31), 0.3);
@@ -239,7 +239,7 @@ TEST_P(DrapeTest, AnOverhandKnotPulledTightStaysTied) {
   for (std::size_t k = 1; k < dense.size(); ++k) arc += (dense[k] - dense[k - 1]).norm();
   const double link = 0.05;
   const int links = static_cast<int>(arc / link) - 1;
-  const SutureModel m = threadOnly(links, link * links);
+  const SutureModel m = threadOnlyModel(links, link * links);
   SutureState s = SutureState::laidOut(m);
   s.x = alongCurve(dense, links + 1, link);
   s.xPrev = s.x;
@@ -287,7 +287,7 @@ TEST_P(DrapeTest, AJawThinnerThanALinkPressesTheThreadWithoutCuttingThroughIt) {
   // on the middle of link 20, between two nodes, and presses the arc 0.04 mm deeper — which
   // the thread's length allows. Node contacts alone let it pass through the link; the nodes
   // pushed to both sides of it then stretch the link to about twice its length.
-  const SutureModel m = threadOnly(40, 4.0);
+  const SutureModel m = threadOnlyModel(40, 4.0);
   const double step = 2.0 * std::numbers::pi / 6.0 / 40.0;
   const double R = 0.05 / std::sin(0.5 * step);
   SutureState s = SutureState::laidOut(m);

@@ -12,7 +12,7 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kMeshes = std::string(MICROSIM_SOURCE_DIR) + "/resources/meshes";
+const std::string kForcepsMeshes = std::string(MICROSIM_SOURCE_DIR) + "/resources/meshes";
 
 ForcepsDef jawDef() {
   ForcepsDef def;
@@ -53,7 +53,7 @@ SceneDef latticeWithForceps() {
   const std::string text = R"({"objects": [{"type": "lattice", "size": [4, 4, 4], "stiffness": 10}],
     "solver": {"name": "newton", "iterations": 50, "tolerance": 1e-10},
     "tools": {"forceps": [{"hand": "right", "mesh": "forceps_jaw.obj"}]}})";
-  SceneDefLoad load = parseSceneDef(text, "grab.json", kMeshes);
+  SceneDefLoad load = parseSceneDef(text, "grab.json", kForcepsMeshes);
   EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
   return std::get<SceneDef>(std::move(load));
 }

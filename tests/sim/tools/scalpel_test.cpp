@@ -12,7 +12,7 @@
 namespace microsim::sim {
 namespace {
 
-const std::string kScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
+const std::string kScalpelScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
 
 // connected pieces of the tissue through its alive links
 int components(const SpringModel& m) {
@@ -62,7 +62,7 @@ TEST(Scalpel, BladeCornersFollowThePose) {
 }
 
 TEST(Scalpel, CuttingAcrossAVesselSeparatesItIntoTwoPieces) {
-  SceneDefLoad load = loadSceneDef(kScenes + "single_vessel.json");
+  SceneDefLoad load = loadSceneDef(kScalpelScenes + "single_vessel.json");
   ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
   Scene scene(std::get<SceneDef>(std::move(load)));
   ASSERT_EQ(components(scene.tissue()), 1);
@@ -87,7 +87,7 @@ TEST(Scalpel, CuttingAcrossAVesselSeparatesItIntoTwoPieces) {
 }
 
 TEST(Scalpel, ABladeThatMissesCutsNothing) {
-  SceneDefLoad load = loadSceneDef(kScenes + "single_vessel.json");
+  SceneDefLoad load = loadSceneDef(kScalpelScenes + "single_vessel.json");
   ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
   Scene scene(std::get<SceneDef>(std::move(load)));
   const int alive = scene.tissue().aliveLinkCount();
