@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The hardening half of the test command (issue #10), after the release suite has passed:
+# The hardening stages (issue #10) that CI (.ci/run) runs after the README's test command:
 #   1. one clang-14 build with AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer
 #      coverage (preset "sanitize"): the WHOLE test suite runs on it, under Xvfb, beside a
 #      throwaway PostgreSQL server, exactly as the release suite does;
@@ -12,13 +12,19 @@
 #      tracker client's thread and the GUI thread; under Xvfb, stopping at the first report
 #      (tests/sanitizers/tsan.supp says how it stays clean without suppressions);
 #   4. clang-tidy over every first-party translation unit (scripts/tidy.sh), which must report
-#      nothing.
+#      nothing; units recorded clean in scripts/tidy-verified.txt and unchanged since are not
+#      analysed again.
+# The instrumented builds are unity builds with line tables only (CMakePresets.json), and each
+# stage's time is printed at the end (scripts/stage-times.sh).
 # Usage: scripts/hardening.sh [sanitize|fuzz|tsan|tidy ...]   (default: all four, in that order)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 # shellcheck source=scripts/ccache-env.sh
 source "$here/scripts/ccache-env.sh"
+# shellcheck source=scripts/stage-times.sh
+source "$here/scripts/stage-times.sh"
+trap 'print_stage_times "scripts/hardening.sh"' EXIT
 export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
 # symbolised stacks in every sanitizer report
 export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-/usr/bin/llvm-symbolizer-14}"
@@ -26,30 +32,27 @@ jobs="$(nproc)"
 stages=("$@")
 [ ${#stages[@]} -eq 0 ] && stages=(sanitize fuzz tsan tidy)
 
-say() { printf '\n== hardening: %s (%s)\n' "$*" "$(date +%H:%M:%S)"; }
 # -noreset: see scripts/test.sh
 under_display_and_postgres() {
   bash "$here/scripts/postgres-for-tests.sh" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
 }
 
+# (each stage runs inside `timed ... ||`, where bash ignores set -e: chain with &&)
 build_sanitize() {
-  cmake --preset sanitize >/dev/null
-  cmake --build --preset sanitize -j "$jobs"
+  cmake --preset sanitize >/dev/null && cmake --build --preset sanitize -j "$jobs"
 }
 
 run_sanitize() {
-  say "building the ASan+UBSan tree (clang-14, build/sanitize)"
-  build_sanitize
-  say "the whole suite under ASan+UBSan"
-  under_display_and_postgres ctest --preset sanitize
+  timed "ASan+UBSan build" build_sanitize
+  timed "ASan+UBSan suite" under_display_and_postgres ctest --preset sanitize
 }
 
 run_fuzz() {
-  [ -x build/sanitize/tests/fuzz/microsim_fuzz_scene ] || build_sanitize
+  [ -x build/sanitize/tests/fuzz/microsim_fuzz_scene ] || build_sanitize || return 1
   local seconds="${MICROSIM_FUZZ_SECONDS:-20}"
   local artifacts="$here/build/sanitize/fuzz-artifacts"
   mkdir -p "$artifacts"
-  say "each fuzz target for ${seconds} s"
+  echo "each fuzz target for ${seconds} s"
   local failed=()
   for seeds in tests/fuzz/corpus/*/; do
     local name
@@ -72,26 +75,22 @@ run_fuzz() {
   [ ${#failed[@]} -eq 0 ] || { echo "hardening: fuzz targets failed: ${failed[*]}" >&2; return 1; }
 }
 
-run_tsan() {
-  say "building the ThreadSanitizer tree (clang-14, build/tsan: app and GUI suites)"
-  cmake --preset tsan >/dev/null
-  cmake --build --preset tsan -j "$jobs"
-  say "the threaded suites under TSan"
-  under_display_and_postgres ctest --preset tsan
+build_tsan() {
+  cmake --preset tsan >/dev/null && cmake --build --preset tsan -j "$jobs"
 }
 
-run_tidy() {
-  say "clang-tidy"
-  bash "$here/scripts/tidy.sh" "$here/build/release"
+run_tsan() {
+  timed "TSan build" build_tsan
+  timed "TSan suite" under_display_and_postgres ctest --preset tsan
 }
 
 for stage in "${stages[@]}"; do
   case "$stage" in
     sanitize) run_sanitize ;;
-    fuzz) run_fuzz ;;
+    fuzz) timed "fuzzers" run_fuzz ;;
     tsan) run_tsan ;;
-    tidy) run_tidy ;;
+    tidy) timed "clang-tidy" bash "$here/scripts/tidy.sh" "$here/build/release" ;;
     *) echo "hardening: unknown stage '$stage' (sanitize, fuzz, tsan, tidy)" >&2; exit 2 ;;
   esac
 done
-say "all stages passed: ${stages[*]}"
+echo "hardening: all stages passed: ${stages[*]}"
