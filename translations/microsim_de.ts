@@ -415,6 +415,10 @@
         <translation>Faden rutscht aus einem Durchstich</translation>
     </message>
     <message>
+        <source>needle leaves a pierce before the thread reaches it</source>
+        <translation>Nadel verlässt einen Durchstich, bevor der Faden ihn erreicht</translation>
+    </message>
+    <message>
         <source>input frame rejected</source>
         <translation>Eingabebild verworfen</translation>
     </message>

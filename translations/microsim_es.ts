@@ -415,6 +415,10 @@
         <translation>la sutura se sale de una punción</translation>
     </message>
     <message>
+        <source>needle leaves a pierce before the thread reaches it</source>
+        <translation>la aguja sale de una punción antes de que el hilo llegue a ella</translation>
+    </message>
+    <message>
         <source>input frame rejected</source>
         <translation>fotograma de entrada rechazado</translation>
     </message>

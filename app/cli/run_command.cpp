@@ -48,6 +48,8 @@ const char* eventKey(sim::SceneEventKind k) {
       return "suture-break";
     case K::SuturePulledOut:
       return "suture-pulled-out";
+    case K::PierceReleased:
+      return "pierce-released";
     case K::InputRejected:
       return "input-rejected";
     case K::TissueOverStretch:
@@ -79,6 +81,8 @@ QString eventText(const sim::SceneEvent& e) {
       return Cli::tr("suture breaks at link %1").arg(e.index);
     case K::SuturePulledOut:
       return Cli::tr("suture slips out of a pierce");
+    case K::PierceReleased:
+      return Cli::tr("needle leaves a pierce before the thread reaches it");
     case K::InputRejected:
       return Cli::tr("input frame rejected");
     case K::TissueOverStretch:

@@ -205,10 +205,16 @@ void Scene::stepSuture() {
   needleHeld_ = false;
   for (const suture::Grip& g : grips) needleHeld_ = needleHeld_ || g.node <= suture_->swage();
   for (const suture::SutureEvent& e : report.events) {
-    if (e.kind == suture::SutureEventKind::Break)
+    if (e.kind == suture::SutureEventKind::Break) {
       addEvent(SceneEventKind::SutureBreak, -1, e.link, 1);
-    else
-      addEvent(SceneEventKind::SuturePulledOut, -1, e.pierce, 1);
+      continue;
+    }
+    // a pierce left the suture: reported by the pierce it was made as
+    const auto at = suturePierceEvents_.begin() + e.pierce;
+    addEvent(e.kind == suture::SutureEventKind::Released ? SceneEventKind::PierceReleased
+                                                         : SceneEventKind::SuturePulledOut,
+             -1, *at, 1);
+    suturePierceEvents_.erase(at);
   }
   coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
 }
@@ -271,6 +277,7 @@ void Scene::applyCrossings() {
     p.node = 0;
     p.point = c.point;
     sutureState_.pierces.push_back(p);
+    suturePierceEvents_.push_back(static_cast<int>(pierces_.size()) - 1);
   }
 }
 

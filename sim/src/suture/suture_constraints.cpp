@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
+#include <utility>
 
 namespace microsim::sim::suture {
 
@@ -18,6 +20,39 @@ double sideStretch(const SutureModel& model, int c, const Vec3& p, const ChainCo
   const double arc = model.arc(c, q->node);
   if (arc <= 0.0) return distance > 0.0 ? std::numeric_limits<double>::max() : 0.0;
   return distance / arc;
+}
+
+// where the needle (the polyline of nodes 0..swage) passes nearest a point: the nearer end
+// node of the nearest segment (the lowest index on ties), and the distance (mm)
+struct NeedlePoint {
+  int node = 0;
+  double distance = 0.0;
+};
+
+NeedlePoint nearestNeedlePoint(const SutureModel& model, const Points& x, const Vec3& p) {
+  NeedlePoint best{0, (x.col(0) - p).norm()};
+  for (int k = 0; k < model.swage(); ++k) {
+    const Vec3 a = x.col(k);
+    const Vec3 d = x.col(k + 1) - a;
+    const double squared = d.squaredNorm();
+    const double t = squared > 0.0 ? std::clamp((p - a).dot(d) / squared, 0.0, 1.0) : 0.0;
+    const double distance = (a + t * d - p).norm();
+    if (distance < best.distance) best = {t < 0.5 ? k : k + 1, distance};
+  }
+  return best;
+}
+
+// pierce indices in path order from the tip: by node; on one node (pierces the needle carries)
+// the later-made first, since the tip made it after the others and nearer itself
+std::vector<int> piercePathOrder(const std::vector<Pierce>& pierces) {
+  std::vector<int> order(pierces.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const int na = pierces[static_cast<std::size_t>(a)].node;
+    const int nb = pierces[static_cast<std::size_t>(b)].node;
+    return na != nb ? na < nb : a > b;
+  });
+  return order;
 }
 
 // Σ (r_k − rc)(x_k − xc)ᵀ over the first `count` nodes, summed node by node. Written out
@@ -54,23 +89,27 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
                  double slideTolerance, std::vector<SutureEvent>& events) {
   int slides = 0;
   const int swage = model.swage();
+  std::vector<std::pair<int, SutureEventKind>> removed;
 
-  // passive pierces follow the needle node nearest their point
-  for (Pierce& p : state.pierces) {
-    if (activePierce(model, p)) continue;
-    int best = 0;
-    double bestDistance = std::numeric_limits<double>::infinity();
-    for (int k = 0; k <= std::min(swage, model.nodeCount() - 1); ++k) {
-      const double d = (state.x.col(k) - p.point).squaredNorm();
-      if (d < bestDistance) {
-        bestDistance = d;
-        best = k;
+  // passive pierces, from the one farthest along the chain to the tip: each follows the
+  // needle node nearest its point, but never onto or past the node of the pierce ahead of it
+  // (a thread node holds one pierce; needle nodes may carry several); one the needle has left
+  // is released
+  int ceiling = model.nodeCount() - 1;
+  const std::vector<int> order = piercePathOrder(state.pierces);
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    Pierce& p = state.pierces[static_cast<std::size_t>(*it)];
+    if (!activePierce(model, p)) {
+      const NeedlePoint near = nearestNeedlePoint(model, state.x, p.point);
+      if (near.distance > model.def().pierceReleaseDistance) {
+        removed.emplace_back(*it, SutureEventKind::Released);
+        continue;
       }
+      p.node = std::min(near.node, ceiling);
     }
-    p.node = best;
+    ceiling = p.node >= swage ? p.node - 1 : p.node;
   }
 
-  std::vector<int> pulledOut;
   for (const Piece& piece : chainPieces(state.alive)) {
     std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
     for (std::size_t k = 0; k < cs.size(); ++k) {
@@ -78,17 +117,23 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
       ChainConstraint& me = cs[k];
       const ChainConstraint* left = k > 0 ? &cs[k - 1] : nullptr;
       const ChainConstraint* right = k + 1 < cs.size() ? &cs[k + 1] : nullptr;
-      // the node may not pass its neighbours, nor leave the thread
-      const int lo = left ? left->node + 1 : std::max(piece.first, swage);
+      // a grip on the needle holds it rigid up to the swage: the thread on that side spans
+      // from the swage, where the needle puts it (measured from the grip, through the needle's
+      // arc, the side could never be taut and the pierce stayed at the swage, towing its wall)
+      const ChainConstraint swageEnd{swage, state.x.col(swage), true};
+      const ChainConstraint* leftEnd = left && left->node < swage ? &swageEnd : left;
+      // the node may not pass its neighbours (pierces keep their order), nor leave the thread:
+      // the rigid needle cannot slide through a pierce backwards
+      const int lo = std::max(left ? left->node + 1 : piece.first, swage);
       const int hi = right ? right->node - 1 : piece.last;
       const auto worst = [&](int c) {
-        return std::max(sideStretch(model, c, me.position, left),
+        return std::max(sideStretch(model, c, me.position, leftEnd),
                         sideStretch(model, c, me.position, right));
       };
       // slide one node at a time while it lowers the tighter side's stretch
       bool out = false;
       for (;;) {
-        const double sl = sideStretch(model, me.node, me.position, left);
+        const double sl = sideStretch(model, me.node, me.position, leftEnd);
         const double sr = sideStretch(model, me.node, me.position, right);
         if (std::max(sl, sr) <= 1.0 + slideTolerance) break;
         const int next = sr > sl ? me.node - 1 : me.node + 1;
@@ -104,15 +149,15 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
         ++slides;
       }
       state.pierces[static_cast<std::size_t>(me.source)].node = me.node;
-      if (out) pulledOut.push_back(me.source);
+      if (out) removed.emplace_back(me.source, SutureEventKind::PulledOut);
     }
   }
 
-  // remove pulled-out pierces, highest index first so earlier indices stay valid
-  std::sort(pulledOut.begin(), pulledOut.end());
-  for (auto it = pulledOut.rbegin(); it != pulledOut.rend(); ++it) {
-    events.push_back({SutureEventKind::PulledOut, -1, *it, state.time});
-    state.pierces.erase(state.pierces.begin() + *it);
+  // remove released and pulled-out pierces, highest index first so earlier indices stay valid
+  std::sort(removed.begin(), removed.end());
+  for (auto it = removed.rbegin(); it != removed.rend(); ++it) {
+    events.push_back({it->second, -1, it->first, state.time});
+    state.pierces.erase(state.pierces.begin() + it->first);
   }
   return slides;
 }

@@ -15,9 +15,10 @@ bool validSutureDef(const SutureDef& d) {
     if (d.needleShape == NeedleShape::Curved && !finitePositive(d.needleRadius)) return false;
     if (d.needleShape == NeedleShape::Straight && !finitePositive(d.needleLength)) return false;
   }
-  return finitePositive(d.breakStretch) && finitePositive(d.massPerLink) &&
-         finitePositive(d.needleMass) && finiteNonNegative(d.contactRadius) &&
-         finiteNonNegative(d.friction) && finiteNonNegative(d.drag);
+  return finitePositive(d.breakStretch) && finitePositive(d.pierceReleaseDistance) &&
+         finitePositive(d.massPerLink) && finitePositive(d.needleMass) &&
+         finiteNonNegative(d.contactRadius) && finiteNonNegative(d.friction) &&
+         finiteNonNegative(d.drag);
 }
 
 SutureModel::SutureModel(const SutureDef& def) : def_(def) {

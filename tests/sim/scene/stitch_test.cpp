@@ -8,9 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <numeric>
 #include <string>
 #include <variant>
 #include <vector>
@@ -96,6 +98,67 @@ TEST(Stitch, TheShippedRecordingIsTheScriptAndReplaysToTheGoldenHash) {
   ASSERT_TRUE(readRecording(path, rec).ok());
   Scene scene(def);
   EXPECT_EQ(replay(scene, rec), kGoldenStitchHash) << std::hex << scene.hash();
+}
+
+// The tip makes the pierces one after another and the thread follows it through them, so each
+// pierce lies nearer the tip than those made before it: along the chain (node index, from the
+// tip) the path is p3 < p2 < p1 < p0, at every step. Pierces the rigid needle still carries
+// may share a node; on the thread each holds its own.
+TEST(Stitch, ThePiercesKeepThePathOrderAtEveryStepOfTheShippedReplay) {
+  const SceneDef def = anastomosis();
+  Recording rec;
+  ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
+  Scene scene(def);
+  const int swage = scene.sutureModel()->swage();
+  const auto nodes = [&] {
+    std::string out;
+    for (const suture::Pierce& p : scene.sutureState()->pierces)
+      out += " " + std::to_string(p.node);
+    return out;
+  };
+  for (const InputFrame& f : rec.frames) {
+    scene.step(f);
+    const std::vector<suture::Pierce>& p = scene.sutureState()->pierces;
+    for (std::size_t k = 1; k < p.size(); ++k) {
+      const bool inOrder =
+          p[k].node < swage ? p[k].node <= p[k - 1].node : p[k].node < p[k - 1].node;
+      ASSERT_TRUE(inOrder) << "step " << scene.steps() << ", pierce nodes" << nodes();
+    }
+  }
+  // the stitch is complete: the four pierces on the thread, the first made farthest from the tip
+  ASSERT_EQ(scene.sutureState()->pierces.size(), 4u) << nodes();
+  EXPECT_GE(scene.sutureState()->pierces.back().node, swage) << nodes();
+}
+
+// The shipped stitch up to the first wall's two pierces, then the same hand motion played
+// backwards: the needle is drawn back out the way it came, leaving every pierce it made (those
+// of the way back too) before the thread reached it. Each is released and reported once.
+TEST(Stitch, ANeedleDrawnBackOutOfTheWallReleasesItsPierces) {
+  const SceneDef def = anastomosis();
+  Recording rec;
+  ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
+  const std::size_t through = 130;  // the tip has entered and left the first wall's tissue
+  const std::size_t before = 80;    // the tip is above the wall again
+  ASSERT_GT(rec.frames.size(), through);
+  std::vector<InputFrame> frames(rec.frames.begin(), rec.frames.begin() + through);
+  for (std::size_t k = through - 1; k-- > before;) {
+    frames.push_back(rec.frames[k]);
+    frames.back().time = frames[frames.size() - 2].time + 0.01;
+  }
+  Scene scene(def);
+  for (const InputFrame& f : frames) scene.step(f);
+
+  EXPECT_TRUE(scene.sutureState()->pierces.empty());
+  std::vector<int> released;
+  for (const SceneEvent& e : scene.events()) {
+    EXPECT_NE(e.kind, SceneEventKind::SuturePulledOut);
+    if (e.kind == SceneEventKind::PierceReleased) released.push_back(e.index);
+  }
+  ASSERT_GE(scene.pierces().size(), 2u);
+  std::sort(released.begin(), released.end());
+  std::vector<int> all(scene.pierces().size());
+  std::iota(all.begin(), all.end(), 0);
+  EXPECT_EQ(released, all);
 }
 
 }  // namespace

@@ -158,6 +158,9 @@ class Scene {
   int steps_ = 0;
   std::vector<SceneEvent> events_;
   std::vector<PierceEvent> pierces_;
+  /// per pierce the suture still passes through (SutureState::pierces order): its index into
+  /// pierces_, which keeps every pierce made
+  std::vector<int> suturePierceEvents_;
 };
 
 /// Loads a scene file and builds it; the error is the loader's.

@@ -21,7 +21,11 @@ enum class SceneEventKind : std::uint8_t {
   PierceExit,     ///< the needle tip left a wall (`index` into Scene::pierces())
   Cut,            ///< the scalpel removed `count` links
   SutureBreak,    ///< the suture broke at link `index`
-  SuturePulledOut,///< the suture slid out of a pierce
+  SuturePulledOut,///< the suture slid out of a pierce (`index` into Scene::pierces())
+  /// the needle left a pierce before the thread reached it (drawn back, or moved off the
+  /// hole by more than SutureDef::pierceReleaseDistance): the suture does not pass there
+  /// (`index` into Scene::pierces())
+  PierceReleased,
   InputRejected,  ///< a frame was unusable (`rejection`); the previous one was used instead
   /// a tissue link's stretch (l − r)/r rose above SceneDef::limits.overstretch: once when it
   /// starts (`index` = the link, `count` = its stretch in per-mille, rounded), then nothing

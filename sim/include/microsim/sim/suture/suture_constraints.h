@@ -6,16 +6,33 @@
 // needle with `oriented`, the whole needle in the pose `rotation`). Soft constraints are
 // pierces (suture_model.h): the suture passes through a point on a tissue face.
 //
+// Path order. The tip makes the pierces one after another and the suture follows it through
+// them, so along the chain (node index, from the tip) each pierce lies nearer the tip than
+// those made before it, and it must stay so: a pierce never passes another. A thread node
+// holds one pierce; pierces the needle still carries may share a needle node (on one node, the
+// later-made is the nearer the tip).
+//
+// Passive pierces. A pierce on a needle node (node < swage) is passive: the rigid needle
+// carries the suture through it, and `node` follows the needle node nearest the point (the
+// nearer end of the nearest needle segment), but never onto or past the node of the pierce
+// ahead of it in path order. When it reaches the swage it is active. Once the needle has left
+// the point — drawn back out of the hole, or moved off it — by more than
+// SutureDef::pierceReleaseDistance, the thread will never pass there: the pierce is removed
+// (SutureEventKind::Released). The needle is a polyline through its nodes, which lies within
+// R(1 − cos(θ/2)) of the true arc (θ the angle of one needle link; 0.009 mm for the scenes'
+// 0.8 mm needle in 8 links), well inside the default 0.05 mm.
+//
 // Sliding. Around each active pierce P at node c, look at its two sides: the neighbouring
 // constraint Q (grip or pierce) on each side, or the chain's free end. A side's stretch is
 //     σ = |P − Q| / arc(c, q)       (0 towards a free end, which can always feed thread)
-// — the straight distance the side must span over the rest length it has. When one side is
-// taut (σ > 1 + slideTolerance) and tighter than the other, the suture slides through the
-// pierce one node towards the slack side (the taut side gains a link), and again while that
-// lowers max(σ_left, σ_right). The pierce point stays on the tissue; only `node` changes. A
-// pierce whose node would slide past a free end has let the suture go (SutureEventKind
-// PulledOut). A pierce on a needle node is passive: the rigid needle carries the suture, and
-// `node` follows the needle node nearest the point until it reaches the thread.
+// — the straight distance the side must span over the rest length it has. A grip on a needle
+// node holds the needle rigid up to the swage, so on that side Q is the swage where the needle
+// puts it, q the swage. When one side is taut (σ > 1 + slideTolerance) and tighter than the
+// other, the suture slides through the pierce one node towards the slack side (the taut side
+// gains a link), and again while that lowers max(σ_left, σ_right), but never past a
+// neighbouring constraint's node, nor below the swage: the rigid needle cannot slide back
+// through a pierce. The pierce point stays on the tissue; only `node` changes. A pierce whose
+// node would slide past a free end has let the suture go (SutureEventKind::PulledOut).
 //
 // Breaking. Between two consecutive grips a and b of one piece, the path the suture must
 // span runs through the pierce points between them: L = Σ |P_k − P_{k+1}|. When
@@ -46,12 +63,14 @@ struct Grip {
 enum class SutureEventKind : std::uint8_t {
   Break,      ///< a link broke between two hard constraints (link = the broken link)
   PulledOut,  ///< the suture slid off its end through a pierce (pierce = its index before removal)
+  Released,   ///< the needle left a passive pierce before the thread reached it (pierce = its
+              ///< index before removal): the suture does not pass there
 };
 
 struct SutureEvent {
   SutureEventKind kind = SutureEventKind::Break;
   int link = -1;     ///< Break: the broken link
-  int pierce = -1;   ///< PulledOut: the pierce's index in SutureState::pierces before removal
+  int pierce = -1;   ///< PulledOut, Released: its index in SutureState::pierces before removal
   double time = 0.0; ///< s
 };
 
@@ -67,8 +86,9 @@ struct ChainConstraint {
 std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
                                               std::span<const Grip> grips, const Piece& piece);
 
-/// The sliding rule of the header essay for every active pierce; updates their nodes, tracks
-/// passive (needle) pierces, removes pulled-out ones. Returns the number of one-node slides.
+/// The rules of the header essay: passive (needle) pierces tracked in path order, released
+/// once the needle has left them; active pierces slid; released and pulled-out pierces removed
+/// (an event each, highest index first). Returns the number of one-node slides.
 int slidePierces(const SutureModel& model, SutureState& state, std::span<const Grip> grips,
                  double slideTolerance, std::vector<SutureEvent>& events);
 

@@ -43,6 +43,9 @@ struct SutureDef {
   double needleRadius = 1.0;     ///< curved needle radius (mm); a 3/8 circle of it
   double needleLength = 2.5;     ///< straight needle length (mm)
   double breakStretch = 0.05;    ///< over-length between two hard constraints that breaks, relative
+  /// mm: a passive pierce (the needle still carrying the suture through it) whose point lies
+  /// farther than this from the needle has been left by it and is released (suture_constraints.h)
+  double pierceReleaseDistance = 0.05;
   double massPerLink = 1e-5;     ///< thread mass per link (g); node i gets half of each link it ends
   double needleMass = 1e-3;      ///< whole needle mass (g), spread over the needle nodes
   double contactRadius = 0.01;   ///< thread radius for contacts (mm)
@@ -96,7 +99,8 @@ class SutureModel {
 /// A pierce: the suture passes through a tissue face at a point given by the face's
 /// barycentric coordinates. It is a soft constraint on chain node `node`, which changes as the
 /// suture slides through. While `node` lies on the needle, the pierce is passive (the rigid
-/// needle carries the suture through) and `node` tracks the needle node nearest the point.
+/// needle carries the suture through) and `node` tracks the needle node nearest the point
+/// (suture_constraints.h: pierces keep their order along the chain).
 struct Pierce {
   int face = -1;                   ///< tissue triangle index
   Vec3 barycentric = Vec3::Zero(); ///< (u, v, w) on the face's corners, sum 1
