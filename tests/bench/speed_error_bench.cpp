@@ -143,9 +143,12 @@ BenchReport runSpeedError(const BenchOptions& options) {
   scenarios.push_back({std::to_string(n) + "^3 stiffness 1000:1", stiffRatioBox(n), latticeTopMiddle(n),
                        Vec3(0, 0, 1)});
 
+  // every scenario warm and cold, then the fine vessel and the two bedded vessels
+  BenchProgress progress(options.progress, 2 * static_cast<int>(scenarios.size()) + 3);
   for (const Scenario& s : scenarios)
     for (int warm = 1; warm >= 0; --warm) {
       const std::string name = s.name + (warm ? ", warm" : ", cold");
+      progress.next(name);
       const PullCase c = warm ? warmPull(name, s.model, s.node, s.step) : coldPull(name, s.model, s.node, s.step);
       measure(c, cap, report);
     }
@@ -159,10 +162,10 @@ BenchReport runSpeedError(const BenchOptions& options) {
     return d;
   }() : VesselDef::fine());
   const int fineRim = fineVessel.node(VesselHull::Outer, fineVessel.def.rings - 1, 0);
+  const std::string fineName = "fine vessel (" + std::to_string(fineVessel.model.nodeCount()) + " nodes), warm";
+  progress.next(fineName);
   const PullCase paperWarm = warmPull("vessel (98 nodes), warm", paperVessel.model, paperRim, Vec3(0, 0, 0.25));
-  const PullCase fineWarm =
-      warmPull("fine vessel (" + std::to_string(fineVessel.model.nodeCount()) + " nodes), warm", fineVessel.model,
-               fineRim, Vec3(0, 0, 0.25));
+  const PullCase fineWarm = warmPull(fineName, fineVessel.model, fineRim, Vec3(0, 0, 0.25));
   // (the 10k-node vessels against qss only: rk4 and implicit add minutes, not insight)
   const std::vector<std::string> pair = {"qss", "newton"};
   const double tFine = measure(fineWarm, cap, report, pair);
@@ -179,14 +182,13 @@ BenchReport runSpeedError(const BenchOptions& options) {
   // the default-length one: the pair the "cost follows the deforming region" target is for
   const VesselMesh shortBed = beddedVessel(VesselDef{}.rings);
   const VesselMesh longBed = beddedVessel(quick ? 71 : 715);
-  const PullCase shortPull = warmPull("bedded vessel (" + std::to_string(shortBed.model.nodeCount()) +
-                                          " nodes), middle pull, warm",
-                                      shortBed.model, middleTop(shortBed), Vec3(0, 0, 0.25));
-  const PullCase longPull = warmPull("long bedded vessel (" + std::to_string(longBed.model.nodeCount()) +
-                                         " nodes), middle pull, warm",
-                                     longBed.model, middleTop(longBed), Vec3(0, 0, 0.25));
-  const double tShort = measure(shortPull, cap, report, pair);
-  const double tLong = measure(longPull, cap, report, pair);
+  const auto middlePull = [&](const std::string& name, const VesselMesh& v) {
+    const std::string caseName = name + " (" + std::to_string(v.model.nodeCount()) + " nodes), middle pull, warm";
+    progress.next(caseName);
+    return measure(warmPull(caseName, v.model, middleTop(v), Vec3(0, 0, 0.25)), cap, report, pair);
+  };
+  const double tShort = middlePull("bedded vessel", shortBed);
+  const double tLong = middlePull("long bedded vessel", longBed);
   BenchRow longRow;
   longRow.bench = "speed-error";
   longRow.caseName = "local pull, long vs default-length bedded vessel, newton";
