@@ -1034,6 +1034,10 @@
         <source>microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
         <translation>microsim-cli db backup: %1 ya existe; no se ha modificado. Elija otro nombre para la copia de seguridad o mueva antes ese archivo.</translation>
     </message>
+    <message>
+        <source>%1: [%2/%3] %4 (%5 s)</source>
+        <translation>%1: [%2/%3] %4 (%5 s)</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -1,20 +1,47 @@
 // `microsim-cli bench NAME [--json FILE] [--plot FILE.png] [--quick]`: runs one of the
 // benchmarks in tests/bench, prints its rows (ours beside the paper's and the peer's),
-// and writes the JSON rows and a PNG of its curves when asked.
+// and writes the JSON rows and a PNG of its curves when asked. While it runs, the case it
+// has started is a line on stderr ("speed-error: [3/11] 20^3, cold (12 s)", at most one a
+// second), never on stdout or in the JSON.
 #include "cli/commands.h"
 #include "cli/output_file.h"
 
 #ifdef MICROSIM_HAVE_BENCHMARKS
 #include "bench_report.h"
 #include "cli/plot_png.h"
+#include "cli/progress_lines.h"
 #endif
 
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QFile>
 
 #include <sstream>
 
 namespace microsim::cli {
+
+#ifdef MICROSIM_HAVE_BENCHMARKS
+namespace {
+
+/// Runs `entry` with each case it starts shown on `err`, with the wall-clock seconds since
+/// the run began.
+bench::BenchReport runShowingProgress(const bench::BenchEntry& entry, bool quick, QTextStream& err) {
+  ProgressLines lines(err);
+  QElapsedTimer clock;
+  clock.start();
+  bench::BenchOptions options;
+  options.quick = quick;
+  options.progress = [&](const bench::BenchStep& step) {
+    lines.step(Cli::tr("%1: [%2/%3] %4 (%5 s)")
+                   .arg(QString::fromStdString(entry.name), QString::number(step.index),
+                        QString::number(step.count), QString::fromStdString(step.caseName),
+                        QString::number(clock.elapsed() / 1000)));
+  };
+  return entry.run(options);
+}
+
+}  // namespace
+#endif
 
 int runBench(const QStringList& args, Streams& io) {
 #ifndef MICROSIM_HAVE_BENCHMARKS
@@ -56,9 +83,7 @@ int runBench(const QStringList& args, Streams& io) {
     return kExitUsage;
   }
 
-  bench::BenchOptions options;
-  options.quick = parser.isSet(quick);
-  const bench::BenchReport report = entry->run(options);
+  const bench::BenchReport report = runShowingProgress(*entry, parser.isSet(quick), io.err);
 
   std::ostringstream table;
   bench::printTable(table, report.rows);

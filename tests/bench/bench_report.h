@@ -5,6 +5,8 @@
 // a peer library or our faithful re-implementation) and "ratio" (value / peer, or
 // value / paper when no peer ran). Curves travel beside the rows for plotting.
 
+#include "bench_progress.h"
+
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -46,8 +48,9 @@ struct BenchReport {
 };
 
 struct BenchOptions {
-  bool quick = false;  ///< smaller sizes and fewer repetitions (used by the smoke tests)
+  bool quick = false;  ///< smaller sizes, lower caps, fewer repetitions: under a minute (smoke tests)
   unsigned seed = 1;   ///< for the random workloads
+  BenchListener progress;  ///< told as each case starts (bench_progress.h); may be empty
 };
 
 using BenchFunction = std::function<BenchReport(const BenchOptions&)>;

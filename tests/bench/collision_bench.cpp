@@ -150,7 +150,7 @@ MaintainResult benchMaintain(const Sizes& s, int rounds, int bumpsPer, unsigned 
   return {1e9 * seconds / triangles, refits / triangles, 1e9 * fclSeconds / triangles};
 }
 
-void benchMaintenance(const Sizes& s, unsigned seed, BenchReport& report) {
+void benchMaintenance(const Sizes& s, unsigned seed, BenchProgress& progress, BenchReport& report) {
   struct Case {
     std::string name;
     int rounds;
@@ -159,11 +159,12 @@ void benchMaintenance(const Sizes& s, unsigned seed, BenchReport& report) {
   const Case cases[] = {{"local (1 bump of r 1-10)", s.localBumps, 1},
                         {"scattered (8 bumps of r 1-10)", s.scatteredRounds, 8}};
   for (const Case& c : cases) {
+    const std::string where = gridName(s.gridCells) + ", " + c.name;
+    progress.next("maintenance, " + where);
     const MaintainResult sphere = benchMaintain<SphereTree>(s, c.rounds, c.bumps, seed);
     const MaintainResult aabb = benchMaintain<AabbTree>(s, c.rounds, c.bumps, seed);
     std::optional<double> fcl;
     if (fclAvailable()) fcl = sphere.fclNsPerTriangle;
-    const std::string where = gridName(s.gridCells) + ", " + c.name;
     report.rows.push_back(row(where + ", sphere tree", "maintenance per deformed triangle",
                               sphere.nsPerTriangle, "ns", kPaperMaintainNsPerTriangle, fcl));
     report.rows.push_back(row(where + ", AABB tree", "maintenance per deformed triangle",
@@ -237,7 +238,7 @@ double sumOf(const std::vector<double>& v) {
   return total;
 }
 
-void benchQueries(const Sizes& s, unsigned seed, BenchReport& report, bool quick) {
+void benchQueries(const Sizes& s, unsigned seed, bool quick, BenchProgress& progress, BenchReport& report) {
   const SpringModel grid = sim::gridMesh(s.planeCells, s.planeCells, 8.0 / s.planeCells);
   const TriangleSoup ball = uvBall(s.ballSlices, s.ballBands, 1.0);
   const std::vector<double> distances = queryDistances(quick);
@@ -245,6 +246,7 @@ void benchQueries(const Sizes& s, unsigned seed, BenchReport& report, bool quick
                                std::to_string(ball.triangles.size()) + " tris";
 
   // before deformation
+  progress.next("queries, " + pathName + ", undeformed");
   Points plane = grid.restPositions();
   SphereTree sphereTree = SphereTree::overTriangles(grid.triangles(), plane);
   AabbTree aabbTree = AabbTree::overTriangles(grid.triangles(), plane);
@@ -274,6 +276,7 @@ void benchQueries(const Sizes& s, unsigned seed, BenchReport& report, bool quick
     lastBump.clear();
     for (const int v : moved) lastBump.insert(lastBump.end(), trianglesOf[v].begin(), trianglesOf[v].end());
   }
+  progress.next("queries, " + pathName + ", deformed");
   const PathTimes sphereAfter = ourPath(s, plane, sphereTree, lastBump, ball, distances);
   const PathTimes aabbAfter = ourPath(s, plane, aabbTree, lastBump, ball, distances);
   std::optional<PathTimes> fclAfter;
@@ -345,9 +348,12 @@ void benchQueries(const Sizes& s, unsigned seed, BenchReport& report, bool quick
 BenchReport runCollision(const BenchOptions& options) {
   const Sizes s = sizesFor(options);
   BenchReport report;
+  // build, two maintenance cases, queries before and after deformation
+  BenchProgress progress(options.progress, 5);
+  progress.next("build, " + gridName(s.gridCells));
   benchBuild(s, report);
-  benchMaintenance(s, options.seed, report);
-  benchQueries(s, options.seed, report, options.quick);
+  benchMaintenance(s, options.seed, progress, report);
+  benchQueries(s, options.seed, options.quick, progress, report);
   return report;
 }
 

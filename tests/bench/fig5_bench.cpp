@@ -68,7 +68,11 @@ BenchReport runFig5(const BenchOptions& options) {
   BenchCurve worstMaxCurve{"max, worst of 5 cycles", {}, {}}, worstMeanCurve{"mean, worst of 5 cycles", {}, {}};
   BenchCurve lastMaxCurve{"max, cycle 5", {}, {}}, lastMeanCurve{"mean, cycle 5", {}, {}};
   BenchCurve paperCurve{"paper: max at most ~10 %", {}, {}};
+  const std::vector<int> boxes = options.quick ? std::vector<int>{4, 6} : std::vector<int>{10, 20};
+  BenchProgress progress(options.progress, static_cast<int>(sizes.size() + boxes.size()));
   for (int n : sizes) {
+    const std::string name = std::to_string(n) + "^3, 5 cycles, k = 10";
+    progress.next(name);
     const SpringModel model = latticeBox(n, 10.0);
     auto solver = makeSolver("qss", qssParams());
     SpringState state = SpringState::atRest(model);
@@ -98,7 +102,6 @@ BenchReport runFig5(const BenchOptions& options) {
     worstMeanCurve.y.push_back(worstMean);
     paperCurve.x.push_back(model.nodeCount());
     paperCurve.y.push_back(10.0);
-    const std::string name = std::to_string(n) + "^3, 5 cycles, k = 10";
     report.rows.push_back(fig5Row(name, "max error (worst cycle; paper: at most ~10 %)", worstMax, 10.0));
     report.rows.push_back(fig5Row(name, "mean error (worst cycle)", worstMean));
   }
@@ -106,10 +109,10 @@ BenchReport runFig5(const BenchOptions& options) {
   report.plots.push_back(sizePlot);
 
   // (b) max error vs k, without and with cutout
-  const std::vector<int> boxes = options.quick ? std::vector<int>{4, 6} : std::vector<int>{10, 20};
   BenchPlot kPlot{"qss max error after one unit displacement", "iterations k", "max error (% of displacement)",
                   true, true, {}};
   for (int n : boxes) {
+    progress.next(std::to_string(n) + "^3, k = 5 to 100, without and with cutout");
     const SpringModel model = latticeBox(n, 10.0);
     const SpringControls controls = topAt(model, n, 1.0);
     const SpringState reference = referenceEquilibrium(model, SpringState::atRest(model), controls);

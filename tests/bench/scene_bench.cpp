@@ -29,7 +29,8 @@ namespace {
 const std::string kSceneBenchRoot = MICROSIM_SOURCE_DIR;
 
 void runCase(const std::string& name, const std::string& sceneFile, bool shipped, sim::StepMode mode,
-             BenchReport& report) {
+             BenchProgress& progress, BenchReport& report) {
+  progress.next(name);
   sim::SceneDefLoad load = sim::loadSceneDef(kSceneBenchRoot + "/resources/scenes/" + sceneFile);
   if (!std::holds_alternative<sim::SceneDef>(load)) return;
   sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
@@ -79,10 +80,11 @@ void runCase(const std::string& name, const std::string& sceneFile, bool shipped
 
 BenchReport runScene(const BenchOptions& options) {
   BenchReport report;
-  runCase("two vessel ends", "anastomosis.json", true, sim::StepMode::Deterministic, report);
+  BenchProgress progress(options.progress, options.quick ? 1 : 3);
+  runCase("two vessel ends", "anastomosis.json", true, sim::StepMode::Deterministic, progress, report);
   if (options.quick) return report;
-  runCase("fine vessel ends", "fine_anastomosis.json", false, sim::StepMode::Deterministic, report);
-  runCase("fine vessel ends, real time", "fine_anastomosis.json", false, sim::StepMode::RealTime, report);
+  runCase("fine vessel ends", "fine_anastomosis.json", false, sim::StepMode::Deterministic, progress, report);
+  runCase("fine vessel ends, real time", "fine_anastomosis.json", false, sim::StepMode::RealTime, progress, report);
   return report;
 }
 

@@ -85,7 +85,9 @@ BenchReport runSoak(const BenchOptions& options) {
   double firstP99 = 0.0;
   double lastP99 = 0.0;
   const std::size_t n = rec.frames.size();
+  BenchProgress progress(options.progress, static_cast<int>(minutes));
   for (int k = 0; k < totalSteps; ++k) {
+    if (k % stepsPerMinute == 0) progress.next("simulated minute " + std::to_string(k / stepsPerMinute + 1));
     const std::size_t i = static_cast<std::size_t>(k) % n;
     if (i == 0 && k > 0) {
       // an attempt is over: it must end where the first one did, then the next one starts

@@ -8,7 +8,8 @@
 // default density against the default vessel, both lying in a bed (the pair for which
 // "cost follows the deforming region" is a fair claim, see beddedVessel). Times are CPU
 // milliseconds of the measuring thread. peer = qss's time, ratio = qss / ours (> 1:
-// faster than qss).
+// faster than qss). --quick runs the same cases on a 6³ box and smaller meshes, each sweep
+// capped at 50 ms and each budget timed once (about 6 s of CPU).
 #include "bench_report.h"
 #include "tissue_bench_util.h"
 #include "tissue_benches.h"
@@ -84,14 +85,21 @@ struct Scenario {
   Vec3 step;
 };
 
+/// How hard each sweep tries. --quick keeps every case and solver on smaller meshes, stops
+/// a sweep sooner and times each budget once, so that the whole run stays under a minute.
+struct Effort {
+  double cap = 1.0;  ///< s of CPU: a sweep stops after its first run longer than this
+  int repeats = 3;   ///< runs per budget, the best one counts
+};
+
 /// Measures every solver on one pull; returns qss-relative rows and a plot, and the
 /// newton time to 1 % (ms, negative when not reached).
-double measure(const PullCase& c, double cap, BenchReport& report,
+double measure(const PullCase& c, const Effort& effort, BenchReport& report,
                const std::vector<std::string>& solvers = kSolvers) {
   BenchPlot plot{"max error vs time, " + c.name, "CPU time (ms)", "max error (% of displacement)", true, true, {}};
   std::map<std::string, ErrorCurve> curves;
   for (const std::string& solver : solvers) {
-    curves[solver] = sweepErrorAgainstTime(c, solver, benchParams(solver), 0.1, cap, 3);
+    curves[solver] = sweepErrorAgainstTime(c, solver, benchParams(solver), 0.1, effort.cap, effort.repeats);
     plot.curves.push_back({solver, curves[solver].milliseconds, curves[solver].maxPercent});
   }
   for (double level : kLevels) {
@@ -106,7 +114,7 @@ double measure(const PullCase& c, double cap, BenchReport& report,
         row.value = t;
         row.unit = "ms CPU";
       } else {
-        row.value = 1e3 * cap;
+        row.value = 1e3 * effort.cap;
         row.unit = "ms CPU (not reached; cap)";
       }
       if (qss >= 0.0) row.peer = qss;
@@ -123,8 +131,8 @@ double measure(const PullCase& c, double cap, BenchReport& report,
 BenchReport runSpeedError(const BenchOptions& options) {
   BenchReport report;
   const bool quick = options.quick;
-  const double cap = quick ? 0.1 : 1.0;
-  const int n = quick ? 8 : 20;
+  const Effort effort = quick ? Effort{0.05, 1} : Effort{};
+  const int n = quick ? 6 : 20;
 
   std::vector<Scenario> scenarios;
   scenarios.push_back({std::to_string(n) + "^3", latticeBox(n, 10.0), latticeTopMiddle(n), Vec3(0, 0, 1)});
@@ -143,11 +151,14 @@ BenchReport runSpeedError(const BenchOptions& options) {
   scenarios.push_back({std::to_string(n) + "^3 stiffness 1000:1", stiffRatioBox(n), latticeTopMiddle(n),
                        Vec3(0, 0, 1)});
 
+  // every scenario warm and cold, then the fine vessel and the two bedded vessels
+  BenchProgress progress(options.progress, 2 * static_cast<int>(scenarios.size()) + 3);
   for (const Scenario& s : scenarios)
     for (int warm = 1; warm >= 0; --warm) {
       const std::string name = s.name + (warm ? ", warm" : ", cold");
+      progress.next(name);
       const PullCase c = warm ? warmPull(name, s.model, s.node, s.step) : coldPull(name, s.model, s.node, s.step);
-      measure(c, cap, report);
+      measure(c, effort, report);
     }
 
   // the fine vessel (same geometry, 10x denser) pulled like the default one: ~100x more
@@ -159,14 +170,15 @@ BenchReport runSpeedError(const BenchOptions& options) {
     return d;
   }() : VesselDef::fine());
   const int fineRim = fineVessel.node(VesselHull::Outer, fineVessel.def.rings - 1, 0);
+  const std::string fineName = "fine vessel (" + std::to_string(fineVessel.model.nodeCount()) + " nodes), warm";
+  progress.next(fineName);
   const PullCase paperWarm = warmPull("vessel (98 nodes), warm", paperVessel.model, paperRim, Vec3(0, 0, 0.25));
-  const PullCase fineWarm =
-      warmPull("fine vessel (" + std::to_string(fineVessel.model.nodeCount()) + " nodes), warm", fineVessel.model,
-               fineRim, Vec3(0, 0, 0.25));
+  const PullCase fineWarm = warmPull(fineName, fineVessel.model, fineRim, Vec3(0, 0, 0.25));
   // (the 10k-node vessels against qss only: rk4 and implicit add minutes, not insight)
   const std::vector<std::string> pair = {"qss", "newton"};
-  const double tFine = measure(fineWarm, cap, report, pair);
-  const double tPaper = sweepErrorAgainstTime(paperWarm, "newton", benchParams("newton"), 0.1, cap, 5).timeTo(1.0);
+  const double tFine = measure(fineWarm, effort, report, pair);
+  const double tPaper =
+      sweepErrorAgainstTime(paperWarm, "newton", benchParams("newton"), 0.1, effort.cap, 5).timeTo(1.0);
   BenchRow fineRow;
   fineRow.bench = "speed-error";
   fineRow.caseName = "pull at the cut end, fine (10x denser) vs default vessel, newton";
@@ -179,14 +191,13 @@ BenchReport runSpeedError(const BenchOptions& options) {
   // the default-length one: the pair the "cost follows the deforming region" target is for
   const VesselMesh shortBed = beddedVessel(VesselDef{}.rings);
   const VesselMesh longBed = beddedVessel(quick ? 71 : 715);
-  const PullCase shortPull = warmPull("bedded vessel (" + std::to_string(shortBed.model.nodeCount()) +
-                                          " nodes), middle pull, warm",
-                                      shortBed.model, middleTop(shortBed), Vec3(0, 0, 0.25));
-  const PullCase longPull = warmPull("long bedded vessel (" + std::to_string(longBed.model.nodeCount()) +
-                                         " nodes), middle pull, warm",
-                                     longBed.model, middleTop(longBed), Vec3(0, 0, 0.25));
-  const double tShort = measure(shortPull, cap, report, pair);
-  const double tLong = measure(longPull, cap, report, pair);
+  const auto middlePull = [&](const std::string& name, const VesselMesh& v) {
+    const std::string caseName = name + " (" + std::to_string(v.model.nodeCount()) + " nodes), middle pull, warm";
+    progress.next(caseName);
+    return measure(warmPull(caseName, v.model, middleTop(v), Vec3(0, 0, 0.25)), effort, report, pair);
+  };
+  const double tShort = middlePull("bedded vessel", shortBed);
+  const double tLong = middlePull("long bedded vessel", longBed);
   BenchRow longRow;
   longRow.bench = "speed-error";
   longRow.caseName = "local pull, long vs default-length bedded vessel, newton";

@@ -24,6 +24,7 @@
 #include "microsim/sim/suture/suture_solver.h"
 
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <string>
 
@@ -164,11 +165,13 @@ BenchReport runSuture(const BenchOptions& options) {
   BenchCurve tFtl{"ftl (paper)", {}, {}}, tDirect{"direct", {}, {}};
   BenchCurve sFtl{"ftl (paper)", {}, {}}, sDirect{"direct", {}, {}};
 
+  BenchProgress progress(options.progress, static_cast<int>(std::size(cases) * sizes.size()));
   for (const Case c : cases) {
     for (int n : sizes) {
+      const std::string name = std::string(caseName(c)) + ", " + std::to_string(n) + " links";
+      progress.next(name);
       const SutureBenchMeasure ftl = measureSutureCase("ftl", c, n, frames);
       const SutureBenchMeasure direct = measureSutureCase("direct", c, n, frames);
-      const std::string name = std::string(caseName(c)) + ", " + std::to_string(n) + " links";
       const auto row = [&](const std::string& solver, const char* metric, double value,
                            const char* unit, std::optional<double> peer) {
         std::string label = name;

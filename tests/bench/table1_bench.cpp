@@ -57,7 +57,9 @@ BenchReport runTable1(const BenchOptions& options) {
   BenchPlot plot{"qss iterations per 1/30 s", "nodes", "iterations", true, true, {}};
   BenchCurve without{"without cutout", {}, {}}, with{"with cutout", {}, {}};
   BenchCurve paperWithout{"paper, without cutout", {}, {}}, paperWith{"paper, with cutout", {}, {}};
+  BenchProgress progress(options.progress, static_cast<int>(sizes.size()));
   for (int n : sizes) {
+    progress.next(std::to_string(n) + "^3");
     const SpringModel model = latticeBox(n, 10.0);
     std::optional<double> paper[2];
     for (const PaperRow& p : kPaper)

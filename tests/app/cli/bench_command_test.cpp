@@ -1,11 +1,15 @@
-// `microsim-cli bench table1 --quick` as a user runs it: the JSON rows' shape, and the
-// paper's figure beside ours on every row the paper has (no timing asserts).
+// `microsim-cli bench table1 --quick` as a user runs it: the JSON rows' shape, the paper's
+// figure beside ours on every row the paper has, and the progress lines on stderr that
+// never reach stdout or the JSON (no timing asserts).
 #include "support/cli_runner.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QJsonParseError>
+#include <QList>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 
@@ -16,11 +20,16 @@ namespace {
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
 
+/// `bench table1 --quick --json OUT`
+CliRun runTable1Quick(const QString& out) {
+  return runCli({QStringLiteral("bench"), QStringLiteral("table1"), QStringLiteral("--quick"),
+                 QStringLiteral("--json"), out});
+}
+
 TEST(BenchCommand, Table1QuickWritesRowsWithThePapersFigures) {
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("table1.json"));
-  const CliRun r = runCli({QStringLiteral("bench"), QStringLiteral("table1"), QStringLiteral("--quick"),
-                           QStringLiteral("--json"), out});
+  const CliRun r = runTable1Quick(out);
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
 
   QFile f(out);
@@ -57,6 +66,53 @@ TEST(BenchCommand, Table1QuickWritesRowsWithThePapersFigures) {
       EXPECT_EQ(row.value(QStringLiteral("paper")).toDouble(), 24.0);
     if (c == QStringLiteral("6^3 with cutout"))
       EXPECT_EQ(row.value(QStringLiteral("paper")).toDouble(), 248.0);
+  }
+}
+
+TEST(BenchCommand, QuickRunShowsItsCasesOnStderrAndKeepsStdoutAndTheJsonClean) {
+  QTemporaryDir dir;
+  const QString out = dir.filePath(QStringLiteral("table1.json"));
+  const CliRun r = runTable1Quick(out);
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+
+  // stderr: "table1: [k/3] BOX (S s)" as the cases start, at most one line a second: the
+  // first case always, a later one unless a newer case or the end came first
+  const QRegularExpression progress(QStringLiteral("^table1: \\[(\\d+)/(\\d+)\\] (.+) \\((\\d+) s\\)$"));
+  const QStringList boxes = {QStringLiteral("6^3"), QStringLiteral("8^3"), QStringLiteral("10^3")};
+  QList<int> shown;
+  for (const QString& line : r.err.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+    const QRegularExpressionMatch m = progress.match(line);
+    if (!m.hasMatch()) continue;  // Qt's own warnings may share stderr
+    const int k = m.captured(1).toInt();
+    EXPECT_EQ(m.captured(2).toInt(), 3) << line.toStdString();
+    ASSERT_TRUE(k >= 1 && k <= 3) << line.toStdString();
+    EXPECT_EQ(m.captured(3), boxes[k - 1]) << line.toStdString();
+    if (!shown.isEmpty()) {
+      EXPECT_GT(k, shown.back()) << line.toStdString();
+    }
+    shown << k;
+  }
+  ASSERT_FALSE(shown.isEmpty()) << r.err.toStdString();
+  EXPECT_EQ(shown.front(), 1);
+
+  // stdout: the table, and no progress
+  EXPECT_TRUE(r.out.contains(QStringLiteral("6^3 without cutout"))) << r.out.toStdString();
+  EXPECT_FALSE(r.out.contains(QStringLiteral("table1: ["))) << r.out.toStdString();
+
+  // the JSON file: the array of rows and nothing else
+  QFile f(out);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  const QByteArray bytes = f.readAll();
+  EXPECT_FALSE(bytes.contains("table1: ["));
+  QJsonParseError error;
+  const QJsonDocument doc = QJsonDocument::fromJson(bytes, &error);
+  ASSERT_EQ(error.error, QJsonParseError::NoError) << error.errorString().toStdString();
+  ASSERT_TRUE(doc.isArray());
+  EXPECT_EQ(doc.array().size(), 6);
+  for (const QJsonValue& v : doc.array()) {
+    ASSERT_TRUE(v.isObject());
+    for (const char* key : {"bench", "case", "metric", "value", "unit"})
+      EXPECT_TRUE(v.toObject().contains(QLatin1String(key))) << key;
   }
 }
 
