@@ -107,7 +107,7 @@ TEST(Stitch, TheShippedRecordingIsTheScriptAndReplaysToTheGoldenHash) {
 TEST(Stitch, ThePiercesKeepThePathOrderAtEveryStepOfTheShippedReplay) {
   const SceneDef def = anastomosis();
   Recording rec;
-  ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
+  ASSERT_TRUE(readRecording(kStitchTestRoot + "/resources/recordings/stitch.msrec", rec).ok());
   Scene scene(def);
   const int swage = scene.sutureModel()->swage();
   const auto nodes = [&] {
@@ -136,7 +136,7 @@ TEST(Stitch, ThePiercesKeepThePathOrderAtEveryStepOfTheShippedReplay) {
 TEST(Stitch, ANeedleDrawnBackOutOfTheWallReleasesItsPierces) {
   const SceneDef def = anastomosis();
   Recording rec;
-  ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
+  ASSERT_TRUE(readRecording(kStitchTestRoot + "/resources/recordings/stitch.msrec", rec).ok());
   const std::size_t through = 130;  // the tip has entered and left the first wall's tissue
   const std::size_t before = 80;    // the tip is above the wall again
   ASSERT_GT(rec.frames.size(), through);
