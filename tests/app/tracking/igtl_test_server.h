@@ -78,7 +78,14 @@ inline Eigen::Matrix4d floatPose(double angleRad, const Eigen::Vector3d& axis, c
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.topLeftCorner<3, 3>() = Eigen::AngleAxisd(angleRad, axis.normalized()).toRotationMatrix();
   m.topRightCorner<3, 1>() = position;
-  return m.cast<float>().cast<double>();
+  // entry by entry: in one unity batch gcc 12 compiled Eigen's cast<float>().cast<double>()
+  // to no conversion at all (objdump: no cvt in this function), and the tests expecting a
+  // float-exact pose failed against the decoder's float-rounded one
+  for (double& v : m.reshaped()) {
+    const volatile float f = static_cast<float>(v);
+    v = static_cast<double>(f);
+  }
+  return m;
 }
 
 /// The source time the decoder reads back from `seconds` (fraction quantised to 2^-32 s).
