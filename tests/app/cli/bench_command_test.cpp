@@ -62,10 +62,12 @@ TEST(BenchCommand, Table1QuickWritesRowsWithThePapersFigures) {
   for (const QJsonValue& v : rows) {
     const QJsonObject row = v.toObject();
     const QString c = row.value(QStringLiteral("case")).toString();
-    if (c == QStringLiteral("6^3 without cutout"))
+    if (c == QStringLiteral("6^3 without cutout")) {
       EXPECT_EQ(row.value(QStringLiteral("paper")).toDouble(), 24.0);
-    if (c == QStringLiteral("6^3 with cutout"))
+    }
+    if (c == QStringLiteral("6^3 with cutout")) {
       EXPECT_EQ(row.value(QStringLiteral("paper")).toDouble(), 248.0);
+    }
   }
 }
 
