@@ -30,4 +30,5 @@ print_stage_times() {
     total=$((total + seconds))
   done <"$MICROSIM_STAGE_TIMES"
   printf '  %-34s %3d min %02d s\n' "total" $((total / 60)) $((total % 60))
+  rm -f "$MICROSIM_STAGE_TIMES"
 }
