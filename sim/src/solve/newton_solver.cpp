@@ -28,6 +28,8 @@
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,10 +39,28 @@ namespace microsim::sim::detail {
 namespace {
 
 constexpr double kReferenceTolerance = 1e-10;
-/// Regions of at least this many nodes are solved with the multigrid preconditioner.
+/// Regions of at least this many nodes are solved with the multigrid preconditioner, smaller
+/// ones by a sparse LDLᵀ factorisation (exact Newton directions; the fill of a tube's mesh is
+/// small at this size).
 constexpr int kMultigridNodes = 2000;
 /// CG iterations above which the multigrid hierarchy is rebuilt for the next step.
 constexpr int kRebuildIterations = 25;
+/// CG iterations, preconditioned by an earlier factorisation, above which the region's
+/// Hessian is factorised anew.
+constexpr int kRefactorIterations = 12;
+
+/// An earlier LDLᵀ factorisation of the region's Hessian as the preconditioner of CG on the
+/// current one: a pull that changes the Hessian a little costs a few solves with the old
+/// factors instead of a new factorisation (most steps of a stitch).
+class FactorPreconditioner final : public Preconditioner {
+ public:
+  explicit FactorPreconditioner(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>& f)
+      : factors_(f) {}
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override { z = factors_.solve(r); }
+
+ private:
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>& factors_;
+};
 
 /// A multigrid hierarchy and what it was built for.
 struct Hierarchy {
@@ -57,12 +77,14 @@ class NewtonSolver final : public TissueSolver {
       : params_(params), reference_(reference) {}
 
   std::string_view name() const override { return reference_ ? "reference" : "newton"; }
+  bool supportsPointSprings() const override { return true; }
   void reset() override {
     lastModel_ = nullptr;
     lastX_.resize(3, 0);
     lastRegion_.clear();
     lastMovers_.clear();
     for (Hierarchy& h : hierarchies_) h.region.clear();
+    factorValid_ = false;
   }
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
@@ -93,6 +115,7 @@ class NewtonSolver final : public TissueSolver {
     scale_ = forceScale(model, controls);
     threshold_ = budget.residualTolerance * scale_;
     kMax_ = maxStiffness(model);
+    indexSprings(n, controls.springs);
     if (static_cast<int>(local_.size()) != n) {
       local_.assign(static_cast<std::size_t>(n), -1);
       region_.clear();
@@ -129,6 +152,9 @@ class NewtonSolver final : public TissueSolver {
       for (int i = 0; i < n; ++i)
         if (free_[i]) seeds.push_back(i);
     }
+    // the soft terms' nodes: their forces change with every set of terms
+    for (const PointSpring& sp : controls.springs)
+      for (int k = 0; k < sp.size(); ++k) seeds.push_back(sp.nodes[static_cast<std::size_t>(k)]);
     growths_ = 0;
     if (local) {
       // seeds already in the kept region bring no layers
@@ -175,6 +201,7 @@ class NewtonSolver final : public TissueSolver {
     }
 
     state.v.setZero();
+    springs_ = nullptr;
     lastConverged_ = report.status == SolveStatus::Converged;
     lastRegion_ = region_;
     lastMovers_ = std::move(movers);
@@ -201,6 +228,22 @@ class NewtonSolver final : public TissueSolver {
     lastAlive_ = model.aliveLinkCount();
     lastGravity_ = model.gravity;
     lastX_ = x;
+  }
+
+  /// Per node, the soft terms that act on it (and its slot in each).
+  void indexSprings(int n, const std::vector<PointSpring>& springs) {
+    springs_ = &springs;
+    springStart_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (const PointSpring& sp : springs)
+      for (int k = 0; k < sp.size(); ++k) ++springStart_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)]) + 1];
+    for (int i = 0; i < n; ++i) springStart_[static_cast<std::size_t>(i) + 1] += springStart_[static_cast<std::size_t>(i)];
+    springOf_.resize(static_cast<std::size_t>(springStart_.back()));
+    std::vector<int> fill(springStart_.begin(), springStart_.end() - 1);
+    for (int t = 0; t < static_cast<int>(springs.size()); ++t) {
+      const PointSpring& sp = springs[static_cast<std::size_t>(t)];
+      for (int k = 0; k < sp.size(); ++k)
+        springOf_[static_cast<std::size_t>(fill[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)])]++)] = {t, k};
+    }
   }
 
   void clearRegion() {
@@ -253,6 +296,11 @@ class NewtonSolver final : public TissueSolver {
       const Vec3 fl = linkForce(link, x.col(link.a), x.col(link.b));
       f += link.a == i ? fl : Vec3(-fl);
     }
+    for (int e = springStart_[static_cast<std::size_t>(i)]; e < springStart_[static_cast<std::size_t>(i) + 1]; ++e) {
+      const auto [t, slot] = springOf_[static_cast<std::size_t>(e)];
+      const PointSpring& sp = (*springs_)[static_cast<std::size_t>(t)];
+      f += sp.weights[static_cast<std::size_t>(slot)] * pointSpringForce(sp, pointSpringOffset(sp, x));
+    }
     return f;
   }
 
@@ -300,14 +348,21 @@ class NewtonSolver final : public TissueSolver {
       }
       e -= model.mass(i) * model.gravity.dot(x.col(i));
     }
+    for (const PointSpring& sp : *springs_)
+      if (touchesRegion(sp)) e += pointSpringEnergy(sp, pointSpringOffset(sp, x));
     return e;
   }
 
-  /// One Newton step on the region from force_ (current); false when it could not move.
-  /// `growing`: the region grew just before this step.
-  bool step(const SpringModel& model, Points& x, double relativeResidual, bool growing) {
+  bool touchesRegion(const PointSpring& sp) const {
+    for (int k = 0; k < sp.size(); ++k)
+      if (local_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)])] >= 0) return true;
+    return false;
+  }
+
+  /// The region's Hessian into system_: the links' true Hessians, or their PSD projections
+  /// (`clamp`), plus the soft terms, plus a tiny diagonal shift.
+  void assemble(const SpringModel& model, const Points& x, bool clamp) {
     const int m = static_cast<int>(region_.size());
-    // clamped Hessian of the region
     system_.clear(m);
     for (int r = 0; r < m; ++r) {
       const int i = region_[r];
@@ -317,7 +372,7 @@ class NewtonSolver final : public TissueSolver {
         const int j = model.otherEnd(li, i);
         const int s = local_[j];
         if (s >= 0 && j < i) continue;
-        const Eigen::Matrix3d h = linkHessian(link, x.col(i), x.col(j), true);
+        const Eigen::Matrix3d h = linkHessian(link, x.col(i), x.col(j), clamp);
         system_.diag[r] += h;
         if (s >= 0) {
           system_.diag[s] += h;
@@ -326,13 +381,92 @@ class NewtonSolver final : public TissueSolver {
       }
       system_.diag[r] += 1e-9 * kMax_ * Eigen::Matrix3d::Identity();
     }
+    for (const PointSpring& sp : *springs_) {
+      const Eigen::Matrix3d h = pointSpringHessian(sp, pointSpringOffset(sp, x));
+      if (h.isZero(0.0)) continue;
+      for (int a = 0; a < sp.size(); ++a) {
+        const int ra = local_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(a)])];
+        if (ra < 0) continue;
+        const double ca = sp.weights[static_cast<std::size_t>(a)];
+        system_.diag[ra] += ca * ca * h;
+        for (int b = a + 1; b < sp.size(); ++b) {
+          const int rb = local_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(b)])];
+          if (rb >= 0) system_.off.push_back({ra, rb, SymBlock::from(ca * sp.weights[static_cast<std::size_t>(b)] * h)});
+        }
+      }
+    }
+  }
 
-    // inexact newton direction
+  /// The newton direction on a small region: CG preconditioned by the kept factorisation
+  /// while it serves, else the true Hessian factorised, else its projection.
+  bool directDirection(const SpringModel& model, const Points& x, double eta) {
+    assemble(model, x, false);
+    if (factorValid_ && factoredRegion_ == region_ && factoredAlive_ == model.aliveLinkCount()) {
+      const PcgResult pcg =
+          solvePcg(system_, FactorPreconditioner(ldlt_), force_, direction_, eta, kRefactorIterations);
+      if (pcg.ok && pcg.relativeResidual <= eta && direction_.allFinite()) return true;
+    }
+    factorValid_ = false;
+    if (!factorise()) {
+      // indefinite (compressed links): this iteration takes the projection. (Keeping the
+      // projection for the rest of the solve converges linearly: 20+ iterations where the
+      // true Hessian, tried again next iteration, needs 13 on the stitch's worst step.)
+      assemble(model, x, true);
+      if (!factorise()) return false;
+    }
+    factorValid_ = true;
+    factoredRegion_ = region_;
+    factoredAlive_ = model.aliveLinkCount();
+    direction_ = ldlt_.solve(force_);
+    return direction_.allFinite();
+  }
+
+  /// Factorises system_ by sparse LDLᵀ; false when it is not positive definite. The symbolic
+  /// analysis is kept while the pattern stays.
+  bool factorise() {
+    const int m = system_.size();
+    triplets_.clear();
+    pattern_.clear();
+    for (int r = 0; r < m; ++r)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j <= i; ++j) triplets_.emplace_back(3 * r + i, 3 * r + j, system_.diag[r](i, j));
+    for (const BlockSystem::Off& o : system_.off) {
+      const int hi = std::max(o.a, o.b), lo = std::min(o.a, o.b);
+      pattern_.push_back({hi, lo});
+      const Eigen::Matrix3d b = o.m.full();
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) triplets_.emplace_back(3 * hi + i, 3 * lo + j, b(i, j));
+    }
+    matrix_.resize(3 * m, 3 * m);
+    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+    if (pattern_ != factoredPattern_ || m != factoredSize_) {
+      ldlt_.analyzePattern(matrix_);
+      factoredPattern_ = pattern_;
+      factoredSize_ = m;
+    }
+    ldlt_.factorize(matrix_);
+    return ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0.0).all();
+  }
+
+  /// One Newton step on the region from force_ (current); false when it could not move.
+  /// `growing`: the region grew just before this step.
+  bool step(const SpringModel& model, Points& x, double relativeResidual, bool growing) {
+    const int m = static_cast<int>(region_.size());
+    // the newton direction: on small regions exact, from the true Hessian while it is
+    // positive definite (quadratic convergence) and its projection where it is not; on
+    // large ones inexact, by PCG on the projection
     double eta = params_.linearTolerance;
     if (!(eta > 0.0)) eta = reference_ ? 1e-8 : std::clamp(relativeResidual, 1e-4, 1e-2);
     PcgResult pcg;
+    bool direct = false;
+    if (m < kMultigridNodes)
+      direct = directDirection(model, x, eta);
+    else
+      assemble(model, x, true);
     Hierarchy* kept = m >= kMultigridNodes ? fittingHierarchy(model) : nullptr;
-    if (m >= kMultigridNodes && (!growing || m == freeCount_ || kept)) {
+    if (direct) {
+      // done above
+    } else if (m >= kMultigridNodes && (!growing || m == freeCount_ || kept)) {
       // multigrid-preconditioned CG, the hierarchy kept while it serves (and not built
       // for a region that may still grow)
       if (!kept) kept = &buildMultigrid(model, x);
@@ -417,6 +551,19 @@ class NewtonSolver final : public TissueSolver {
   Eigen::VectorXd force_, direction_;
   Points start_;
   BlockSystem system_;
+  // the direct path: the lower triangle, its factorisation and the pattern it was analysed for
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> matrix_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
+  std::vector<std::pair<int, int>> pattern_, factoredPattern_;
+  int factoredSize_ = -1;
+  bool factorValid_ = false;
+  std::vector<int> factoredRegion_;
+  int factoredAlive_ = -1;
+  // the soft terms of this solve, and per node the (term, slot) pairs that act on it
+  const std::vector<PointSpring>* springs_ = nullptr;
+  std::vector<int> springStart_{0};
+  std::vector<std::pair<int, int>> springOf_;
   // the multigrid hierarchies of the last two regions and what they were built for
   std::array<Hierarchy, 2> hierarchies_;
   long uses_ = 0;

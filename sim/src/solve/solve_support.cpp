@@ -22,6 +22,15 @@ bool validInput(const SpringModel& model, const SpringState& state,
   if (controls.targets.cols() != controls.size()) return false;
   for (int c : controls.nodes)
     if (c < 0 || c >= n) return false;
+  for (const PointSpring& s : controls.springs) {
+    if (!(s.k >= 0.0) || !std::isfinite(s.k) || !std::isfinite(s.gap) || !s.anchor.allFinite() ||
+        !s.normal.allFinite() || s.size() == 0)
+      return false;
+    for (int k = 0; k < s.size(); ++k) {
+      const int node = s.nodes[static_cast<std::size_t>(k)];
+      if (node < 0 || node >= n || !std::isfinite(s.weights[static_cast<std::size_t>(k)])) return false;
+    }
+  }
   return allFinite(controls.targets);
 }
 

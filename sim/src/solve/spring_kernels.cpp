@@ -27,6 +27,14 @@ void totalForces(const SpringModel& model, const Points& x, Points& forces) {
   }
 }
 
+void addPointSpringForces(const std::vector<PointSpring>& springs, const Points& x, Points& forces) {
+  for (const PointSpring& s : springs) {
+    const Vec3 f = pointSpringForce(s, pointSpringOffset(s, x));
+    for (int k = 0; k < s.size(); ++k)
+      forces.col(s.nodes[static_cast<std::size_t>(k)]) += s.weights[static_cast<std::size_t>(k)] * f;
+  }
+}
+
 double totalEnergy(const SpringModel& model, const Points& x,
                    const std::vector<unsigned char>& free) {
   double e = 0.0;
@@ -66,6 +74,7 @@ double forceScale(const SpringModel& model, const SpringControls& controls) {
 double relativeResidual(const SpringModel& model, const Points& x, const SpringControls& controls) {
   Points f;
   totalForces(model, x, f);
+  addPointSpringForces(controls.springs, x, f);
   const std::vector<unsigned char> free = freeMask(model, controls);
   double worst = 0.0;
   for (int i = 0; i < model.nodeCount(); ++i)

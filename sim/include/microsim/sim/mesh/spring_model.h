@@ -15,6 +15,8 @@
 // and in the adjacency, marked dead, and every kernel skips it. Indices stay valid, so
 // node orderings, trees and recordings that name links survive a cut.
 
+#include "microsim/sim/mesh/point_spring.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -122,10 +124,13 @@ struct SpringState {
   static SpringState atRest(const SpringModel& model);
 };
 
-/// Positions imposed on control nodes this step (the nodes a tool holds).
+/// What acts on the tissue this step besides its links: positions imposed on control nodes
+/// (the nodes a tool holds), and soft terms (point_spring.h: the thread's pull at a pierce,
+/// contacts). Soft terms are honoured by the solvers whose supportsPointSprings() is true.
 struct SpringControls {
   std::vector<int> nodes;
   Points targets{3, 0};  ///< 3 by nodes.size(), mm
+  std::vector<PointSpring> springs;
 
   void add(int node, const Vec3& target);
   int size() const { return static_cast<int>(nodes.size()); }

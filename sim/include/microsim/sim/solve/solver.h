@@ -83,6 +83,9 @@ class TissueSolver {
   /// Forget caches (orderings, warm starts): call after topology or control-set changes
   /// that the solver cannot see for itself.
   virtual void reset() {}
+  /// Whether the solver honours SpringControls::springs (point_spring.h); one that does not
+  /// leaves them out of its forces, and the scene then couples by position (scene.h).
+  virtual bool supportsPointSprings() const { return false; }
 };
 
 /// The solver registered under `name` ("qss", "rk4", "implicit", "newton", "reference"),

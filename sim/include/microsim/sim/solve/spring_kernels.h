@@ -117,6 +117,8 @@ std::vector<unsigned char> freeMask(const SpringModel& model, const SpringContro
 /// Forces on every node (3 by #N, µN): Σ over alive links of the spring forces plus the
 /// weight m_i g. Constrained nodes get their forces too; callers mask them.
 void totalForces(const SpringModel& model, const Points& x, Points& forces);
+/// Adds the forces of the soft terms (point_spring.h) to `forces` (3 by #N, µN).
+void addPointSpringForces(const std::vector<PointSpring>& springs, const Points& x, Points& forces);
 /// Total potential energy (nJ): Σ over alive links of E − Σ_i m_i g·x_i over free nodes.
 double totalEnergy(const SpringModel& model, const Points& x,
                    const std::vector<unsigned char>& free);
@@ -130,7 +132,7 @@ double forceScale(const SpringModel& model, const SpringControls& controls);
 
 /// The relative residual every solver reports and stops on:
 ///   max over free nodes i of |f_i| / forceScale,
-/// f_i the total force on node i (springs and weight). 0 means exact equilibrium.
+/// f_i the total force on node i (links, the controls' soft terms and weight). 0 means exact equilibrium.
 /// The controls are assumed applied to x already.
 double relativeResidual(const SpringModel& model, const Points& x, const SpringControls& controls);
 
