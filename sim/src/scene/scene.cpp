@@ -2,11 +2,13 @@
 
 #include "microsim/sim/solve/state_hash.h"
 #include "microsim/sim/suture/suture_coupling.h"
+#include "microsim/sim/tools/jaw_contact.h"
 #include "microsim/sim/tools/scalpel.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -92,6 +94,11 @@ Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
     if (def_.forceps[static_cast<std::size_t>(h)])
       forceps_[static_cast<std::size_t>(h)].emplace(*def_.forceps[static_cast<std::size_t>(h)]);
 
+  // contact where the solver can take it
+  const ContactDef& contact = def_.contact;
+  if (solver_->supportsPointSprings() && (contact.tissue || contact.tools) && !tissue.triangles().empty())
+    contact_.emplace(tissue, contact.params);
+
   // trees only for the tools that need them
   const bool faces = def_.needle.has_value();
   const bool links = def_.scalpel.has_value();
@@ -133,6 +140,7 @@ void Scene::placeTools(const InputFrame& frame) {
     const Eigen::Isometry3d pose = poseOf(in);
     if (in.instrument == Instrument::Scalpel && def_.scalpel) blade_[hs] = pose;
     if (!forceps) continue;
+    jawsPlaced_[hs] = holdsJaws(in.instrument);
 
     // jaws follow the hand; a hand that put the forceps down opens it
     const double closure = holdsJaws(in.instrument) ? in.closure : 0.0;
@@ -216,7 +224,11 @@ void Scene::stepSuture() {
              -1, *at, 1);
     suturePierceEvents_.erase(at);
   }
-  coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
+  // two-way coupling where the tissue solver takes soft terms, by position otherwise
+  if (solver_->supportsPointSprings())
+    couplingSprings_ = suture::couplingSprings(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
+  else
+    coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
 }
 
 PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const {
@@ -303,6 +315,7 @@ void Scene::assembleControls() {
     add(fixedControls.nodes[static_cast<std::size_t>(c)], fixedControls.targets.col(c));
   for (int c = 0; c < coupling_.size(); ++c)
     add(coupling_.nodes[static_cast<std::size_t>(c)], coupling_.targets.col(c));
+  controls_.springs = couplingSprings_;
 }
 
 void Scene::checkStretch(const std::vector<int>& moved) {
@@ -343,6 +356,82 @@ void Scene::checkStretch(const std::vector<int>& moved) {
   }
   addEvent(SceneEventKind::TissueTear, -1, torn.front(), static_cast<int>(torn.size()));
   solver_->reset();
+}
+
+namespace {
+/// Tissue solves a step may take when the solves keep running into faces.
+constexpr int kContactRounds = 3;
+}  // namespace
+
+std::vector<std::uint8_t> Scene::jawSkip() const {
+  const SpringModel& tissue = def_.tissue.model;
+  std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
+  for (int i = 0; i < tissue.nodeCount(); ++i) skip[static_cast<std::size_t>(i)] = tissue.isFixed(i) ? 1 : 0;
+  for (const auto& f : forceps_)
+    if (f)
+      for (int n : f->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
+  return skip;
+}
+
+SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
+  const SpringModel& tissue = def_.tissue.model;
+  if (!contact_) {
+    report.contactRounds = 1;
+    return solver_->solve(tissue, state_, controls_, budget);
+  }
+
+  // contact terms from where the tissue is now: every node near a face it may touch, every
+  // node near a placed jaw
+  const std::size_t own = controls_.springs.size();
+  std::vector<collide::TissueContactPair> pairs;
+  if (def_.contact.tissue) {
+    // the tissue has not moved since the last look (most steps of an attempt): same pairs
+    if (nearX_.cols() != state_.x.cols() ||
+        std::memcmp(nearX_.data(), state_.x.data(), sizeof(double) * static_cast<std::size_t>(state_.x.size())) != 0) {
+      nearPairs_ = contact_->near(state_.x);
+      nearX_ = state_.x;
+    }
+    pairs = nearPairs_;
+    for (const auto& p : pairs) controls_.springs.push_back(contact_->spring(p, state_.x));
+  }
+  if (def_.contact.tools) {
+    const std::vector<std::uint8_t> skip = jawSkip();
+    for (int h = 0; h < kHandCount; ++h) {
+      const auto& f = forceps_[static_cast<std::size_t>(h)];
+      if (f && jawsPlaced_[static_cast<std::size_t>(h)])
+        tools::appendJawContacts(*f, state_.x, contact_->surfaceNodes(), skip, def_.contact.params.reach,
+                                 contact_->stiffness(), controls_.springs);
+    }
+  }
+
+  // solve; a node carried into a face it had no term for adds one (normal and contact point
+  // taken from before the solve, when it was still outside) and the solve goes again
+  const Points before = state_.x;
+  SolveReport total;
+  for (int round = 0; round < kContactRounds; ++round) {
+    const SolveReport r = solver_->solve(tissue, state_, controls_, budget);
+    total.status = r.status;
+    total.residual = r.residual;
+    total.iterations += r.iterations;
+    total.seconds += r.seconds;
+    report.contactRounds = round + 1;
+    if (!def_.contact.tissue || round + 1 == kContactRounds) break;
+    if (std::memcmp(before.data(), state_.x.data(), sizeof(double) * static_cast<std::size_t>(before.size())) == 0)
+      break;  // nothing moved, nothing ran into anything
+    bool added = false;
+    for (const auto& v : contact_->violations(state_.x)) {
+      if (std::find(pairs.begin(), pairs.end(), v) != pairs.end()) continue;
+      pairs.push_back(v);
+      controls_.springs.push_back(contact_->spring(v, before));
+      added = true;
+    }
+    if (!added) break;
+  }
+  for (std::size_t k = own; k < controls_.springs.size(); ++k) {
+    const PointSpring& sp = controls_.springs[k];
+    if (!pointSpringForce(sp, pointSpringOffset(sp, state_.x)).isZero(0.0)) ++report.contacts;
+  }
+  return total;
 }
 
 StepReport Scene::step(const InputFrame& in) {
@@ -414,7 +503,7 @@ StepReport Scene::step(const InputFrame& in) {
   }
   const bool limited = def_.limits.overstretch > 0.0 || def_.limits.tear > 0.0;
   const Points before = collision_ || limited ? state_.x : Points(3, 0);
-  report.tissue = solver_->solve(def_.tissue.model, state_, controls_, budget);
+  report.tissue = solveTissue(budget, report);
   report.times.tissue = now() - t0;
 
   // the trees follow the nodes that moved (counted as collision time); their links are

@@ -254,7 +254,7 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
   if (!object(v, path,
               {"shape", "radius", "length", "thread_length", "links", "needle_links",
                "break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
-               "solver", "substeps", "iterations", "coupling_gain"}))
+               "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness"}))
     return false;
   suture::SutureDef& s = out.suture;
   s.links = 60;
@@ -280,7 +280,8 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
       !optNonNegative(v, path, "drag", s.drag) ||
       !optInt(v, path, "substeps", 1, out.step.substeps) ||
       !optInt(v, path, "iterations", 1, out.step.iterations) ||
-      !optPositive(v, path, "coupling_gain", out.coupling.gain))
+      !optPositive(v, path, "coupling_gain", out.coupling.gain) ||
+      !optPositive(v, path, "coupling_stiffness", out.coupling.stiffness))
     return false;
   if (s.links < s.needleLinks + 1) return fail(SceneErrorKind::InvalidValue, key(path, "links"));
   if (out.coupling.gain > 1.0) return fail(SceneErrorKind::InvalidValue, key(path, "coupling_gain"));
@@ -362,8 +363,16 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
   if (const json* v = field(doc, "tissue"); v && !limits(*v, out.limits)) return false;
   if (const json* v = field(doc, "collision")) {
     std::string tree = "aabb";
-    if (!object(*v, "collision", {"tree"})) return false;
+    if (!object(*v, "collision", {"tree", "tissue", "tools", "stiffness", "thickness", "reach", "self_distance"}))
+      return false;
     if (const json* t = field(*v, "tree"); t && !string(*t, "collision.tree", tree)) return false;
+    ContactDef& c = out.contact;
+    if (!optBool(*v, "collision", "tissue", c.tissue) || !optBool(*v, "collision", "tools", c.tools) ||
+        !optPositive(*v, "collision", "stiffness", c.params.stiffness) ||
+        !optPositive(*v, "collision", "thickness", c.params.thickness) ||
+        !optPositive(*v, "collision", "reach", c.params.reach) ||
+        !optNonNegative(*v, "collision", "self_distance", c.params.selfDistance))
+      return false;
     if (tree == "aabb")
       out.tree = CollisionTree::Aabb;
     else if (tree == "sphere")

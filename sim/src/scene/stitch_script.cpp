@@ -144,8 +144,12 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   rec.metadata = R"({"script":"stitch","version":1})";
   const StitchGeometry& g = p->g;
   const suture::SutureModel needle(scene.needle->suture);
+  // both tools take the needle across its plane, jaws along the needle frame's normal (the
+  // tool's +x, from the tips back to the hinge, turned onto the needle's z): as a needle
+  // holder is held, so that the jaws stay out of the walls the needle turns through
   const auto gripAt = [&](int node) {
     Eigen::Isometry3d grip = Eigen::Isometry3d::Identity();
+    grip.linear() = Eigen::AngleAxisd(-0.5 * std::numbers::pi, Vec3::UnitY()).toRotationMatrix();
     grip.translation() = needle.needleShape().col(std::min(node, needle.needleLinks()));
     return grip;
   };

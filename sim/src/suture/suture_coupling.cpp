@@ -22,8 +22,16 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
   std::vector<PierceTension> tensions(state.pierces.size());
   for (const Piece& piece : chainPieces(state.alive)) {
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    // a pierce with only pierces between it and a free end carries no tension: that end
+    // feeds thread through them as fast as it is drawn (they slide, suture_constraints.h)
+    std::size_t firstHard = cs.size(), lastHard = 0;
+    for (std::size_t k = 0; k < cs.size(); ++k)
+      if (cs[k].hard) {
+        firstHard = std::min(firstHard, k);
+        lastHard = k;
+      }
     for (std::size_t k = 0; k < cs.size(); ++k) {
-      if (cs[k].hard) continue;
+      if (cs[k].hard || firstHard > k || lastHard < k) continue;
       // the tightest side's excess, carried by every taut side (one tension through the pierce)
       double excess = 0.0;
       Vec3 pull = Vec3::Zero();
@@ -71,6 +79,27 @@ SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX
   for (const auto& [node, sum] : perNode)
     controls.add(node, Vec3(tissueX.col(node)) + params.gain * sum.first / sum.second);
   return controls;
+}
+
+std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
+                                         const SutureModel& model, const SutureState& state,
+                                         std::span<const Grip> grips, const CouplingParams& params) {
+  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips);
+  std::vector<PointSpring> springs;
+  for (std::size_t k = 0; k < tensions.size(); ++k) {
+    if (!tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
+    const Pierce& p = state.pierces[k];
+    const std::array<int, 3>& t = tissue.triangles()[static_cast<std::size_t>(p.face)];
+    PointSpring s;
+    for (std::size_t c = 0; c < 3; ++c) {
+      s.nodes[c] = t[c];
+      s.weights[c] = p.barycentric[static_cast<Eigen::Index>(c)];
+    }
+    s.anchor = tissuePoint(tissue, tissueX, p.face, p.barycentric) + params.gain * tensions[k].pull;
+    s.k = params.stiffness;
+    springs.push_back(s);
+  }
+  return springs;
 }
 
 }  // namespace microsim::sim::suture

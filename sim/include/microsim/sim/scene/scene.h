@@ -14,9 +14,13 @@
 //                 (pierce entry and exit; only while a forceps holds the needle: nothing
 //                 drives a loose needle through a wall), a scalpel's blade against the
 //                 links; after the tissue solve the trees are refit where nodes moved;
-//   tissue        the tissue solver runs with those controls; then the links of the nodes
-//                 that moved are checked against the stretch limits (SceneDef::limits:
-//                 over-stretch events, tears removed like cuts), counted as interactions.
+//   tissue        the tissue solver runs with those controls and, where it takes soft
+//                 terms, with contact: tissue against tissue and the placed forceps' jaws
+//                 against tissue (one-sided springs detected before the solve; a node the
+//                 solve carried into a face adds its term and the solve repeats, at most
+//                 kContactRounds times); then the links of the nodes that moved are checked
+//                 against the stretch limits (SceneDef::limits: over-stretch events, tears
+//                 removed like cuts), counted as interactions.
 // Only what the scene declares is built: no needle, no face tree and no suture stage; no
 // scalpel, no link tree.
 //
@@ -39,6 +43,7 @@
 //
 // Units: millimetres, seconds, grams.
 
+#include "microsim/sim/collide/tissue_contact.h"
 #include "microsim/sim/scene/input_frame.h"
 #include "microsim/sim/scene/scene_def.h"
 #include "microsim/sim/scene/scene_events.h"
@@ -75,6 +80,8 @@ struct StepReport {
   SolveReport tissue;
   bool inputRejected = false;
   int events = 0;  ///< events this step added
+  int contacts = 0;  ///< contact terms pressed at the end of the tissue solve
+  int contactRounds = 0;  ///< tissue solves this step (more than one when a solve ran into a face)
 };
 
 class SceneCollision;
@@ -122,6 +129,8 @@ class Scene {
   void applyCrossings();
   void assembleControls();
   void checkStretch(const std::vector<int>& moved);
+  SolveReport solveTissue(const SolveBudget& budget, StepReport& report);
+  std::vector<std::uint8_t> jawSkip() const;
   PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const;
   void addEvent(SceneEventKind kind, int hand, int index, int count);
 
@@ -143,9 +152,14 @@ class Scene {
   Vec3 tangentBefore_ = Vec3::UnitX();
   Vec3 tangentAfter_ = Vec3::UnitX();
   bool needleHeld_ = false;
-  SpringControls coupling_;
+  SpringControls coupling_;                  ///< the suture's pull by position
+  std::vector<PointSpring> couplingSprings_;  ///< or as springs (two-way)
 
   std::array<std::optional<tools::Forceps>, kHandCount> forceps_;
+  std::array<bool, kHandCount> jawsPlaced_{};  ///< a tracked hand holds the forceps: its jaws touch
+  std::optional<collide::TissueContact> contact_;
+  Points nearX_{3, 0};                               ///< the tissue when nearPairs_ were found
+  std::vector<collide::TissueContactPair> nearPairs_;
   std::array<bool, kHandCount> grabDue_{};
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> blade_;     // this step
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> bladeWas_;  // last step

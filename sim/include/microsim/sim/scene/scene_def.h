@@ -16,7 +16,11 @@
 //    "tissue": {"overstretch", "tear"},       stretch limits (l − r)/r, each off unless given:
 //              above "overstretch" a link raises SceneEventKind::TissueOverStretch once
 //              (again only after it fell back), above "tear" it is removed (TissueTear)
-//    "collision": {"tree": "aabb" (default) | "sphere"}}
+//    "collision": {"tree": "aabb" (default) | "sphere",
+//                  "tissue" (true): tissue against tissue, "tools" (true): jaws against
+//                  tissue (both need a solver that takes soft terms: newton, reference),
+//                  "stiffness" (g/s², 20 × the stiffest link), "thickness" (mm, 0.01),
+//                  "reach" (mm, 0.1), "self_distance" (mm, 0.3): collide/tissue_contact.h}}
 //
 // OBJECT is any object of a spring scene (spring_scene.h: spring-mesh, lattice, vessel,
 // grid, tetra-lattice, surface-mesh; read by that loader, so its rules and errors hold) or
@@ -31,13 +35,15 @@
 // NEEDLE: {"shape": "curved"|"straight", "radius", "length" (needle, mm), "thread_length"
 //    (mm), "links", "needle_links", "break_stretch", "contact_radius", "friction", "drag",
 //    "position" ([x,y,z] mm) and "rotation" ([w,x,y,z], needle frame → scene) of the needle
-//    at the start, "solver" ("direct"|"ftl"), "substeps", "iterations", "coupling_gain"}
+//    at the start, "solver" ("direct"|"ftl"), "substeps", "iterations", "coupling_gain",
+//    "coupling_stiffness" (g/s², suture_coupling.h)}
 // SCALPEL: {"blade_length" (mm, 2), "blade_height" (mm, 0.5)}
 //
 // Loading never throws and never prints; errors are SceneError (spring_scene.h) with the
 // file, line, column and field path ("tools.forceps[1].mesh"); a missing tool mesh is
 // SceneErrorKind::MeshImport with the importer's error.
 
+#include "microsim/sim/collide/tissue_contact.h"
 #include "microsim/sim/mesh/spring_model.h"
 #include "microsim/sim/mesh/vessel.h"
 #include "microsim/sim/scene/input_frame.h"
@@ -130,6 +136,14 @@ struct TissueLimitsDef {
 
 enum class CollisionTree : std::uint8_t { Aabb, Sphere };
 
+/// Contact of the tissue with itself and with the forceps' jaws (collide/tissue_contact.h,
+/// tools/jaw_contact.h). Needs a tissue solver that takes soft terms; off otherwise.
+struct ContactDef {
+  bool tissue = true;  ///< tissue against tissue
+  bool tools = true;   ///< the forceps' jaws against the tissue
+  collide::TissueContactParams params;
+};
+
 struct SceneDef {
   std::string file;  ///< the scene file as given, empty when parsed from memory
   SpringScene tissue;                  ///< merged tissue model, static controls, objects
@@ -142,6 +156,7 @@ struct SceneDef {
   StepDef step;
   TissueLimitsDef limits;
   CollisionTree tree = CollisionTree::Aabb;
+  ContactDef contact;
 };
 
 using SceneDefLoad = std::variant<SceneDef, SceneError>;

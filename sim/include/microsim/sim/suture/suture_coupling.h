@@ -6,9 +6,13 @@
 //   1. readPiercePoints: every pierce point is re-read from the tissue, P = u a + v b + w c
 //      for its face (a, b, c) and barycentrics (u, v, w), so the suture follows the vessel;
 //   2. the suture steps (suture_solver.h): it slides through the pierces to relieve stretch;
-//   3. couplingControls: what stretch sliding could not relieve pulls the tissue. A pierce P
-//      between neighbouring constraints Q (grip or pierce; a free end pulls nothing) slides
-//      freely, so one tension runs through it: with e = max_sides (|Q − P| − arc) the
+//   3. couplingControls: what stretch sliding could not relieve pulls the tissue, where the
+//      thread is anchored on both sides. A pierce with only pierces between it and a free end
+//      pulls nothing: that end feeds thread through them as fast as it is drawn (a thread
+//      drawn through the walls without a knot leaves them where they are; sliding moves whole
+//      links, so without this rule the sub-link excess it leaves would tow the wall a little
+//      every frame). A pierce P with a grip somewhere on each side, between neighbouring
+//      constraints Q (grip or pierce), slides freely, so one tension runs through it: with e = max_sides (|Q − P| − arc) the
 //      tightest side's excess length, every taut side pulls P towards its Q by e:
 //          pull(P) = max(e, 0) · Σ_{taut sides} (Q − P)/|Q − P|              (mm)
 //      where a side is taut when |Q − P| ≥ arc − l (within one link of straight: sliding moves
@@ -26,6 +30,15 @@
 // The suture is inextensible and the tissue yields: gain ∈ (0, 1] is the fraction of the
 // excess the tissue takes per frame (1 = at once; less damps the exchange).
 //
+// Two-way coupling (couplingSprings, used whenever the tissue solver honours soft terms):
+// instead of moving the face's corners, the pierce point itself, P = u a + v b + w c, is
+// tied by a zero-rest spring (point_spring.h) to where the thread wants it, P + gain·pull(P),
+// with the thread's axial stiffness k = EA / L (CouplingParams::stiffness). The tissue's own
+// stiffness then limits how far the point goes: a soft wall follows the thread, a stiff one
+// (or one held by the other hand) stretches the thread instead, and the thread's tension is
+// k times what is left, T = k |anchor − P| after the solve. Only the pierced point is pulled,
+// so one pass through a wall no longer carries its whole face rigidly.
+//
 // Units: millimetres.
 
 #include "microsim/sim/mesh/spring_model.h"
@@ -37,8 +50,14 @@
 
 namespace microsim::sim::suture {
 
+/// The axial stiffness of 10-0 nylon over a few millimetres of free thread (g/s², force per
+/// mm): E ≈ 3 GPa (nylon 6 monofilament), d ≈ 22 µm (USP 10-0: 20–29 µm), so EA ≈ 1.1 N, and
+/// over L ≈ 5 mm from the pierce to the hand EA / L ≈ 0.23 N/mm = 2.3e5 g/s².
+inline constexpr double kNylon10_0Stiffness = 2.3e5;
+
 struct CouplingParams {
   double gain = 1.0;  ///< fraction of the excess length the tissue takes per frame, (0, 1]
+  double stiffness = kNylon10_0Stiffness;  ///< g/s²: the thread's pull per mm of excess left
 };
 
 /// The point u a + v b + w c of tissue face `face` (mm).
@@ -64,5 +83,11 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
                                 const SutureModel& model, const SutureState& state,
                                 std::span<const Grip> grips, const CouplingParams& params = {});
+
+/// The two-way coupling: one spring per pierce that pulls or holds (SutureState::pierces
+/// order among them), from the pierce point to P + gain·pull(P), of the thread's stiffness.
+std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
+                                         const SutureModel& model, const SutureState& state,
+                                         std::span<const Grip> grips, const CouplingParams& params = {});
 
 }  // namespace microsim::sim::suture

@@ -1,0 +1,84 @@
+#pragma once
+// Tissue against tissue: the two cut ends against each other, a wall against the opposite
+// wall of its own lumen (so a back-wall catch is something the needle has to push through,
+// and a collapsed lumen stays a lumen). Penalty contact, as one-sided point springs
+// (point_spring.h) that the tissue solver minimises with the links:
+//
+//   for a surface node p and a face (a, b, c) it may touch, with q = u a + v b + w c the
+//   closest point of the face and n the face's normal (outward: the vessel's triangles are
+//   wound so that it points out of the wall), the term keeps n·(p − q) ≥ thickness. Both
+//   sides move (weights 1, −u, −v, −w).
+//
+// Which pairs may touch. A node and a face whose rest positions are within selfDistance
+// never collide: they are the same stretch of wall (the other layer of it, or a neighbour),
+// and what keeps them apart is the links. Everything farther apart at rest, within one body
+// or across bodies, may. So no body labels are needed, and a mesh with one lumen or ten is
+// treated alike.
+//
+// When. The scene detects at the start of the tissue solve (every node within `reach` of a
+// face gets a term, pressed or not: one-sided terms cost nothing until pressed), solves, and
+// looks again for nodes that the solve carried into a face without a term (violations); those
+// are added and the solve repeats, at most a few rounds (scene.cpp).
+//
+// Cost. A uniform grid of the faces' boxes (cell = the largest of the mean edge and 2·reach),
+// a sorted list of (cell, face) rebuilt per detection: O(F log F + N log F) for F faces and N
+// surface nodes. The scene looks again only when the tissue has moved.
+//
+// Units: mm, stiffness g/s².
+
+#include "microsim/sim/mesh/point_spring.h"
+#include "microsim/sim/mesh/spring_model.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace microsim::sim::collide {
+
+struct TissueContactParams {
+  double stiffness = 0.0;     ///< g/s²; 0 = 20 × the stiffest link
+  double thickness = 0.01;    ///< mm: the separation contact keeps
+  double reach = 0.1;         ///< mm: a node this near a face is watched during a solve
+  double selfDistance = 0.3;  ///< mm: node and face this near at rest never collide
+};
+
+/// One node against one face.
+struct TissueContactPair {
+  int node = -1;
+  int face = -1;
+  bool operator==(const TissueContactPair&) const = default;
+};
+
+class TissueContact {
+ public:
+  TissueContact(const SpringModel& tissue, const TissueContactParams& params);
+
+  /// Every (node, face) pair within reach at positions x, at most one face per node (the
+  /// closest), in node order.
+  std::vector<TissueContactPair> near(const Points& x) const;
+  /// The pairs whose node lies less than half the thickness in front of (or behind) the face.
+  std::vector<TissueContactPair> violations(const Points& x) const;
+  /// The one-sided spring that keeps `pair` apart, its normal frozen at positions x.
+  PointSpring spring(const TissueContactPair& pair, const Points& x) const;
+
+  double stiffness() const { return stiffness_; }
+  /// The nodes on the tissue's faces, in order: the ones that can touch anything.
+  const std::vector<int>& surfaceNodes() const { return surfaceNodes_; }
+  const TissueContactParams& params() const { return params_; }
+
+ private:
+  /// The closest eligible face to node i within `radius` (−1 for none), its signed distance.
+  std::pair<int, double> closestFace(const Points& x, int node, double radius) const;
+  void buildGrid(const Points& x) const;
+  std::int64_t cellKey(int ix, int iy, int iz) const;
+
+  const SpringModel& tissue_;
+  TissueContactParams params_;
+  double stiffness_ = 0.0;
+  double cell_ = 1.0;
+  std::vector<int> surfaceNodes_;
+  // the grid, rebuilt for each query at its positions: (cell, face) sorted
+  mutable std::vector<std::pair<std::int64_t, int>> grid_;
+};
+
+}  // namespace microsim::sim::collide

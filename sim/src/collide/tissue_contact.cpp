@@ -1,0 +1,119 @@
+#include "microsim/sim/collide/tissue_contact.h"
+
+#include "microsim/sim/collide/point_triangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace microsim::sim::collide {
+
+TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParams& params)
+    : tissue_(tissue), params_(params) {
+  double kMax = 0.0;
+  for (const Link& link : tissue.links()) kMax = std::max(kMax, link.k);
+  stiffness_ = params.stiffness > 0.0 ? params.stiffness : 20.0 * kMax;
+
+  // the nodes on the surface, and the mean edge of its faces (the grid's cell)
+  std::vector<std::uint8_t> onSurface(static_cast<std::size_t>(tissue.nodeCount()), 0);
+  double edges = 0.0;
+  const auto rest = tissue.restPositions();
+  for (const auto& t : tissue.triangles())
+    for (std::size_t c = 0; c < 3; ++c) {
+      onSurface[static_cast<std::size_t>(t[c])] = 1;
+      edges += (rest.col(t[c]) - rest.col(t[(c + 1) % 3])).norm();
+    }
+  for (int i = 0; i < tissue.nodeCount(); ++i)
+    if (onSurface[static_cast<std::size_t>(i)]) surfaceNodes_.push_back(i);
+  const double meanEdge = tissue.triangles().empty() ? 1.0 : edges / (3.0 * static_cast<double>(tissue.triangles().size()));
+  cell_ = std::max({meanEdge, 2.0 * params.reach, 1e-6});
+}
+
+std::int64_t TissueContact::cellKey(int ix, int iy, int iz) const {
+  // 21 bits a coordinate: cells of ≥ 1 µm over ±1 m
+  const auto b = [](int v) { return static_cast<std::int64_t>(v) & 0x1FFFFF; };
+  return (b(ix) << 42) | (b(iy) << 21) | b(iz);
+}
+
+void TissueContact::buildGrid(const Points& x) const {
+  grid_.clear();
+  const double r = params_.reach;
+  const auto& triangles = tissue_.triangles();
+  for (int f = 0; f < static_cast<int>(triangles.size()); ++f) {
+    const auto& t = triangles[static_cast<std::size_t>(f)];
+    Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - r;
+    Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + r;
+    const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
+    const Eigen::Vector3i b = (hi / cell_).array().floor().cast<int>();
+    for (int ix = a.x(); ix <= b.x(); ++ix)
+      for (int iy = a.y(); iy <= b.y(); ++iy)
+        for (int iz = a.z(); iz <= b.z(); ++iz) grid_.emplace_back(cellKey(ix, iy, iz), f);
+  }
+  std::sort(grid_.begin(), grid_.end());
+}
+
+std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius) const {
+  const Vec3 p = x.col(node);
+  const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
+  const std::int64_t key = cellKey(c.x(), c.y(), c.z());
+  const auto first = std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
+  const auto rest = tissue_.restPositions();
+  const double self2 = params_.selfDistance * params_.selfDistance;
+  int best = -1;
+  double bestDistance = radius;
+  double bestSigned = 0.0;
+  for (auto it = first; it != grid_.end() && it->first == key; ++it) {
+    const int f = it->second;
+    const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
+    bool eligible = true;
+    for (int v : t)
+      if (v == node || (rest.col(v) - rest.col(node)).squaredNorm() < self2) eligible = false;
+    if (!eligible) continue;
+    const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
+    if (!(q.distance < bestDistance)) continue;
+    const Vec3 normal = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+    const double side = normal.dot(p - q.point);
+    best = f;
+    bestDistance = q.distance;
+    bestSigned = side < 0.0 ? -q.distance : q.distance;
+  }
+  return {best, bestSigned};
+}
+
+std::vector<TissueContactPair> TissueContact::near(const Points& x) const {
+  std::vector<TissueContactPair> pairs;
+  if (tissue_.triangles().empty()) return pairs;
+  buildGrid(x);
+  for (int i : surfaceNodes_) {
+    const auto [face, distance] = closestFace(x, i, params_.reach);
+    if (face >= 0) pairs.push_back({i, face});
+  }
+  return pairs;
+}
+
+std::vector<TissueContactPair> TissueContact::violations(const Points& x) const {
+  std::vector<TissueContactPair> pairs;
+  if (tissue_.triangles().empty()) return pairs;
+  buildGrid(x);
+  for (int i : surfaceNodes_) {
+    const auto [face, distance] = closestFace(x, i, params_.reach);
+    if (face >= 0 && distance < 0.5 * params_.thickness) pairs.push_back({i, face});
+  }
+  return pairs;
+}
+
+PointSpring TissueContact::spring(const TissueContactPair& pair, const Points& x) const {
+  const auto& t = tissue_.triangles()[static_cast<std::size_t>(pair.face)];
+  const Vec3 p = x.col(pair.node);
+  const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
+  PointSpring s;
+  s.nodes = {pair.node, t[0], t[1], t[2]};
+  s.weights = {1.0, -q.barycentric.x(), -q.barycentric.y(), -q.barycentric.z()};
+  Vec3 n = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+  s.normal = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::UnitZ();
+  s.gap = params_.thickness;
+  s.k = stiffness_;
+  return s;
+}
+
+}  // namespace microsim::sim::collide
