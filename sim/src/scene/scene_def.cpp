@@ -98,7 +98,7 @@ bool SceneReader::vesselFields(const json& o, const std::string& path, VesselDef
       !optNonNegative(o, path, "damping", def.damping) ||
       !optInt(o, path, "rings", 2, def.rings) ||
       !optInt(o, path, "nodes_per_ring", 3, def.nodesPerRing) ||
-      !optBool(o, path, "clamp_first_ring", def.clampFirstRing))
+      !optBool(o, path, "clamp_first_ring", def.clampFirstRing) || !wallMaterial(o, path, def))
     return false;
   if (def.wallThickness >= def.radius)
     return fail(SceneErrorKind::InvalidValue, key(path, "wall_thickness"));
@@ -127,7 +127,7 @@ bool SceneReader::severedVessel(const json& o, std::size_t i, SceneDef& out) {
   if (!object(o, path,
               {"type", "name", "gap", "center", "axis", "preset", "radius", "wall_thickness",
                "length", "rings", "nodes_per_ring", "k_layer", "k_between", "mass", "damping",
-               "clamp_first_ring"}))
+               "clamp_first_ring", "material"}))
     return false;
   VesselDef def;
   double gap = 0.5;

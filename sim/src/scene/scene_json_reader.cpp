@@ -148,6 +148,25 @@ bool JsonReader::optBool(const json& obj, const std::string& path, std::string_v
   return !v || boolean(*v, key(path, name), out);
 }
 
+bool JsonReader::wallMaterial(const json& obj, const std::string& path, VesselDef& def) {
+  const json* v = field(obj, "material");
+  if (!v) return true;
+  const std::string at = key(path, "material");
+  WallMaterial m;
+  if (!object(*v, at, {"youngs_modulus", "fung_exponent", "density", "damping_ratio"}) ||
+      !optPositive(*v, at, "youngs_modulus", m.youngsModulus) ||
+      !optNonNegative(*v, at, "fung_exponent", m.fungExponent) ||
+      !optPositive(*v, at, "density", m.density) ||
+      !optNonNegative(*v, at, "damping_ratio", m.dampingRatio))
+    return false;
+  // b·s is evaluated up to strain 5; beyond e^50 the law is linear anyway (spring_kernels.h)
+  if (m.fungExponent > 50.0) return fail(SceneErrorKind::InvalidValue, key(at, "fung_exponent"));
+  def.material = m;
+  def.overrides = {field(obj, "k_layer") != nullptr, field(obj, "k_between") != nullptr,
+                   field(obj, "mass") != nullptr, field(obj, "damping") != nullptr};
+  return true;
+}
+
 bool JsonReader::optVec3(const json& obj, const std::string& path, std::string_view name,
                          Vec3& out) {
   const json* v = field(obj, name);

@@ -5,6 +5,7 @@
 // wrong JSON types, non-finite and negative numbers, and unknown keys are errors.
 
 #include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/mesh/vessel.h"
 #include "microsim/sim/scene/spring_scene.h"
 
 #include <nlohmann/json.hpp>
@@ -64,6 +65,12 @@ class JsonReader {
               int& out);
   bool optBool(const json& obj, const std::string& path, std::string_view name, bool& out);
   bool optVec3(const json& obj, const std::string& path, std::string_view name, Vec3& out);
+
+  /// A vessel object's optional "material": {"youngs_modulus" (g/(mm·s²) = Pa),
+  /// "fung_exponent", "density" (g/mm³), "damping_ratio"}, each defaulting to WallMaterial's.
+  /// With a material, the object's explicit "k_layer", "k_between", "mass" and "damping"
+  /// are recorded in def.overrides (an explicit value wins over the derived one).
+  bool wallMaterial(const json& obj, const std::string& path, VesselDef& def);
 
  private:
   std::optional<SceneError> error_;

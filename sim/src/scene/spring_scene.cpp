@@ -132,7 +132,7 @@ bool Reader::vessel(const json& o, const std::string& path, SpringModel& m) {
   if (!object(o, path,
               {"type", "name", "preset", "radius", "wall_thickness", "length", "rings",
                "nodes_per_ring", "k_layer", "k_between", "mass", "damping", "clamp_first_ring",
-               "origin", "direction", "fixed", "controls"}))
+               "origin", "direction", "fixed", "controls", "material"}))
     return false;
   VesselDef def;
   if (const json* v = field(o, "preset")) {
@@ -166,6 +166,7 @@ bool Reader::vessel(const json& o, const std::string& path, SpringModel& m) {
     return false;
   if (const json* v = field(o, "direction"); v && !vec3(*v, key(path, "direction"), def.direction))
     return false;
+  if (!wallMaterial(o, path, def)) return false;
   if (def.wallThickness >= def.radius)
     return fail(SceneErrorKind::InvalidValue, key(path, "wall_thickness"));
   if (!(def.direction.norm() > 0.0))

@@ -15,7 +15,7 @@ struct Neighbour {
   int node;
   double k;
   double rest;
-  double c;  ///< stiffening coefficient
+  Stiffening c;  ///< stiffening terms (spring_kernels.h)
 };
 
 class QssSolver final : public TissueSolver {
@@ -173,7 +173,7 @@ class QssSolver final : public TissueSolver {
         const Link& link = model.link(li);
         if (!link.alive) continue;
         neighbours_.push_back({model.otherEnd(li, i), link.k, link.rest, stiffeningCoefficient(link)});
-        linear = linear && neighbours_.back().c == 0.0;
+        linear = linear && neighbours_.back().c.linear();
         kSum += link.k;
       }
       start_.push_back(static_cast<int>(neighbours_.size()));

@@ -47,8 +47,46 @@ TEST(SceneDef, TheAnastomosisSceneHasTwoVesselEndsTwoForcepsAndANeedle) {
   EXPECT_EQ(s.needle->suture.links, 60);
   EXPECT_FALSE(s.scalpel.has_value());
   EXPECT_EQ(s.tree, CollisionTree::Aabb);
-  EXPECT_EQ(s.solver.name, "qss");
+  EXPECT_EQ(s.solver.name, "newton");
   EXPECT_EQ(s.step.rateHz, 100.0);
+  // a wall material, and the tissue limits on
+  ASSERT_TRUE(s.vessels[0].def.material.has_value());
+  EXPECT_EQ(s.vessels[0].def.material->youngsModulus, 3.0e5);
+  EXPECT_EQ(s.tissue.model.link(0).law, StiffnessLaw::Exponential);
+  EXPECT_EQ(s.limits.overstretch, 0.3);
+  EXPECT_EQ(s.limits.tear, 0.6);
+}
+
+TEST(SceneDef, AVesselMaterialIsReadAndAnExplicitStiffnessWins) {
+  SceneDefLoad load = parseSceneDef(R"({"objects": [{"type": "severed-vessel", "k_between": 80,
+      "material": {"youngs_modulus": 2e5, "fung_exponent": 7}}]})");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  const SceneDef& s = std::get<SceneDef>(load);
+  const WallMaterial& m = *s.vessels[1].def.material;
+  EXPECT_EQ(m.youngsModulus, 2e5);
+  EXPECT_EQ(m.fungExponent, 7.0);
+  EXPECT_EQ(m.density, WallMaterial{}.density);
+  bool between = false;
+  for (const Link& l : s.tissue.model.links()) {
+    EXPECT_EQ(l.law, StiffnessLaw::Exponential);
+    EXPECT_EQ(l.gain, 7.0);
+    between = between || l.k == 80.0;
+  }
+  EXPECT_TRUE(between);
+  // the same on a single vessel, through the spring-scene loader
+  load = parseSceneDef(R"({"objects": [{"type": "vessel", "material": {}}]})");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  EXPECT_EQ(std::get<SceneDef>(load).tissue.model.link(0).law, StiffnessLaw::Exponential);
+  EXPECT_NEAR(std::get<SceneDef>(load).tissue.model.mass(0), 1.06e-3 * 0.09 * 3.0 * 3.14159265358979 / 98, 1e-12);
+}
+
+TEST(SceneDef, BadMaterialsAreRejectedByField) {
+  EXPECT_EQ(sceneDefErrorOf(R"({"objects": [{"type": "severed-vessel", "material": {"youngs_modulus": 0}}]})").field,
+            "objects[0].material.youngs_modulus");
+  EXPECT_EQ(sceneDefErrorOf(R"({"objects": [{"type": "vessel", "material": {"fung_exponent": 80}}]})").field,
+            "objects[0].material.fung_exponent");
+  const SceneError e = sceneDefErrorOf(R"({"objects": [{"type": "vessel", "material": {"modulus": 1}}]})");
+  EXPECT_EQ(e.kind, SceneErrorKind::UnknownField);
 }
 
 TEST(SceneDef, OnlyDeclaredToolsExist) {

@@ -1,9 +1,14 @@
 // Tissue stretch limits (SceneDef::limits): an over-stretch event where a link's stretch
 // rises above the threshold, once, and tears that remove links like a cut.
+#include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <variant>
 #include <vector>
@@ -63,6 +68,122 @@ TEST(TissueLimits, ALinkPastTheTearThresholdIsRemoved) {
   // the torn chain goes on stepping without further events
   scene.step(InputFrame{});
   EXPECT_EQ(scene.events().size(), 1u);
+}
+
+// --- a forceps on the shipped orientation scene's wall (two vessel ends, wall material,
+// newton, over-stretch 0.3, tear 0.6) ---
+
+const std::string kLimitsScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
+
+// the right forceps, jaws pointing down onto the wall (tool +x → scene +z) and opening
+// across the vessel (tool y → scene y), tip at `tip` (mm)
+InputFrame graspFrame(const Vec3& tip, double closure, int k) {
+  InputFrame f;
+  f.time = 0.01 * k;
+  f.hand(Hand::Left).instrument = Instrument::None;
+  HandInput& h = f.hand(Hand::Right);
+  h.instrument = Instrument::Forceps;
+  h.tracked = true;
+  h.position = tip;
+  h.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(-0.5 * std::numbers::pi, Vec3::UnitY()));
+  h.closure = closure;
+  return f;
+}
+
+// the largest stretch (l − r)/r of an alive link
+double largestStretch(const Scene& scene) {
+  const SpringModel& m = scene.tissue();
+  const Points& x = scene.tissueState().x;
+  double worst = 0.0;
+  for (const Link& l : m.links())
+    if (l.alive && l.rest > 0.0) worst = std::max(worst, ((x.col(l.b) - x.col(l.a)).norm() - l.rest) / l.rest);
+  return worst;
+}
+
+struct DragResult {
+  int held = 0;             ///< tissue nodes the forceps took
+  int overStretches = 0;
+  int tears = 0;
+  double largestStretch = 0.0;  ///< over every step's end, alive links
+};
+
+// the jaws close (crossing close_at at 0.8, 0.2 mm apart across the top of end 0's cut
+// ring, just outside its outer surface), then the closed forceps moves by `drag` (mm) in
+// 0.1 mm steps and holds there; every step is checked: finite, and no alive link beyond
+// the tear strain
+DragResult dragCutEdge(const Vec3& drag) {
+  SceneDefLoad load = loadSceneDef(kLimitsScenes + "orientation.json");
+  EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
+  Scene scene(std::get<SceneDef>(std::move(load)));
+  const double tear = scene.def().limits.tear;
+  EXPECT_GT(tear, 0.0);
+  const SceneVessel& end0 = scene.def().vessels.front();
+  const Vec3 cut = end0.def.origin + end0.def.length * end0.def.direction;
+  const Vec3 start = cut + Vec3(0, 0, end0.def.radius + 0.01);
+
+  DragResult r;
+  int k = 0;
+  auto step = [&](const Vec3& tip, double closure) {
+    scene.step(graspFrame(tip, closure, k++));
+    EXPECT_TRUE(scene.tissueState().x.allFinite()) << "step " << k;
+    const double worst = largestStretch(scene);
+    EXPECT_LE(worst, tear) << "an alive link past the tear strain at step " << k;
+    r.largestStretch = std::max(r.largestStretch, worst);
+  };
+  step(start, 0.0);
+  step(start, 0.8);
+  r.held = scene.forceps(Hand::Right) ? static_cast<int>(scene.forceps(Hand::Right)->heldNodes().size()) : 0;
+  const int steps = std::max(1, static_cast<int>(std::ceil(drag.norm() / 0.1)));
+  for (int s = 1; s <= steps; ++s) step(start + drag * (static_cast<double>(s) / steps), 1.0);
+  for (int s = 0; s < 5; ++s) step(start + drag, 1.0);
+  r.overStretches = static_cast<int>(eventsOf(scene, SceneEventKind::TissueOverStretch).size());
+  r.tears = static_cast<int>(eventsOf(scene, SceneEventKind::TissueTear).size());
+  return r;
+}
+
+TEST(TissueLimits, AGentleDragOfTheGraspedWallRaisesNoEvent) {
+  // 0.3 mm towards the other end, the way the ends are brought together
+  const DragResult r = dragCutEdge(Vec3(0.3, 0, 0));
+  ASSERT_GT(r.held, 0);
+  EXPECT_EQ(r.overStretches, 0);
+  EXPECT_EQ(r.tears, 0);
+  EXPECT_LT(r.largestStretch, 0.3);
+  RecordProperty("largest_stretch", std::to_string(r.largestStretch));
+}
+
+TEST(TissueLimits, ARoughDragOfTheGraspedWallOverStretchesOrTearsIt) {
+  const DragResult r = dragCutEdge(Vec3(2.0, 0, 0));
+  ASSERT_GT(r.held, 0);
+  EXPECT_GT(r.overStretches + r.tears, 0);
+}
+
+TEST(TissueLimits, ARoughLiftOfTheGraspedWallOverStretchesOrTearsIt) {
+  const DragResult r = dragCutEdge(Vec3(0, 0, 2.0));
+  ASSERT_GT(r.held, 0);
+  EXPECT_GT(r.overStretches + r.tears, 0);
+}
+
+// the shipped stitch replayed on the shipped scene: no alive link beyond the tear strain at
+// the end of any step (a link past it is torn, with an event), and nothing goes NaN
+TEST(TissueLimits, TheShippedStitchLeavesNoLinkPastTheTearStrain) {
+  SceneDefLoad load = loadSceneDef(kLimitsScenes + "anastomosis.json");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  Recording rec;
+  ASSERT_TRUE(readRecording(std::string(MICROSIM_SOURCE_DIR) + "/resources/recordings/stitch.msrec", rec).ok());
+  Scene scene(std::get<SceneDef>(std::move(load)));
+  const double tear = scene.def().limits.tear;
+  ASSERT_GT(tear, 0.0);
+  double largest = 0.0;
+  for (const InputFrame& f : rec.frames) {
+    scene.step(f);
+    ASSERT_TRUE(scene.tissueState().x.allFinite()) << "step " << scene.steps();
+    const double worst = largestStretch(scene);
+    largest = std::max(largest, worst);
+    EXPECT_LE(worst, tear) << "step " << scene.steps();
+  }
+  RecordProperty("largest_stretch", std::to_string(largest));
+  RecordProperty("tears", std::to_string(eventsOf(scene, SceneEventKind::TissueTear).size()));
+  RecordProperty("over_stretches", std::to_string(eventsOf(scene, SceneEventKind::TissueOverStretch).size()));
 }
 
 TEST(TissueLimits, BadLimitsAreRejectedByField) {

@@ -4,6 +4,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <cmath>
+
 namespace microsim::sim {
 namespace {
 
@@ -50,6 +52,64 @@ TEST(SpringKernels, StiffeningLawMatchesFiniteDifferences) {
   const double l = 1.2, r = 0.8, d = l - r;
   EXPECT_NEAR(linkForce(link, Vec3::Zero(), Vec3(l, 0, 0)).x(), 3.0 * d * (1 + 40.0 * d * d / (r * r)),
               1e-12);
+}
+
+TEST(SpringKernels, ExponentialLawMatchesFiniteDifferences) {
+  // b = 6, the vessel wall's exponent: stretched to strain 0.25 and 0.6, and compressed
+  const Link link = makeLink(3.0, 0.8, StiffnessLaw::Exponential, 6.0);
+  checkAgainstFiniteDifferences(link, Vec3(0, 0, 0), Vec3(0.9, 0.4, 0.2));
+  checkAgainstFiniteDifferences(link, Vec3(0, 0, 0), Vec3(1.2, 0.5, 0.3));
+  checkAgainstFiniteDifferences(link, Vec3(0, 0, 0), Vec3(0.3, 0.2, 0.1));
+  // T = k0 r (e^{b s} − 1)/b, T' = k0 e^{b s}, E = k0 r² (e^{b s} − 1 − b s)/b²
+  const double k = 3.0, r = 0.8, b = 6.0, l = 1.1, s = (l - r) / r;
+  const Vec3 xb(l, 0, 0);
+  EXPECT_NEAR(linkForce(link, Vec3::Zero(), xb).x(), k * r * std::expm1(b * s) / b, 1e-12);
+  EXPECT_NEAR(linkHessian(link, Vec3::Zero(), xb).coeff(0, 0), k * std::exp(b * s), 1e-12);
+  EXPECT_NEAR(linkEnergy(link, Vec3::Zero(), xb), k * r * r * (std::expm1(b * s) - b * s) / (b * b),
+              1e-12);
+}
+
+TEST(SpringKernels, ExponentialLawIsContinuousWithItsSlopeAtZeroStrain) {
+  // T and T' meet the constant law's k0 Δ and k0 at Δ = 0 from both sides
+  const double k = 7.0, r = 0.5;
+  const Stiffening c = stiffeningCoefficient(makeLink(k, r, StiffnessLaw::Exponential, 8.0));
+  for (double h : {1e-9, 1e-7, 1e-5}) {
+    const double d = (r + h) - r;  // the stretch the kernels see
+    EXPECT_NEAR(springTension(k, r, c, r + h), k * d, k * d * (c.beta * d + 1e-12));  // k d (1 + βd/2 + …)
+    EXPECT_NEAR(springTension(k, r, c, r - h), -k * h, 1e-12);
+    EXPECT_NEAR(springTensionDerivative(k, r, c, r + h), k, 1e-3 * k);
+    EXPECT_DOUBLE_EQ(springTensionDerivative(k, r, c, r - h), k);
+    EXPECT_NEAR(springEnergy(k, r, c, r + h), 0.5 * k * d * d, 1e-4 * k * d * d);
+  }
+  EXPECT_DOUBLE_EQ(springTension(k, r, c, r), 0.0);
+  EXPECT_DOUBLE_EQ(springEnergy(k, r, c, r), 0.0);
+  // across the series/expm1 switch of the energy (x = βΔ = 0.01) the energy is smooth
+  const double dSwitch = 0.01 / c.beta;
+  EXPECT_NEAR(springEnergy(k, r, c, r + dSwitch * (1 - 1e-12)), springEnergy(k, r, c, r + dSwitch * (1 + 1e-12)),
+              1e-10 * springEnergy(k, r, c, r + dSwitch));
+}
+
+TEST(SpringKernels, ExponentialLawContinuesLinearlyPastItsKneeWithoutOverflow) {
+  // strain 5 is the knee: beyond it T grows with the knee's slope, E and T stay finite
+  const double k = 2.0, r = 1.0, b = 8.0;
+  const Link link = makeLink(k, r, StiffnessLaw::Exponential, b);
+  const Stiffening c = stiffeningCoefficient(link);
+  const double knee = r * (1.0 + kExpStrainCap);
+  const double slope = springTensionDerivative(k, r, c, knee);
+  EXPECT_NEAR(slope, k * std::exp(b * kExpStrainCap), 1e-6 * slope);
+  EXPECT_DOUBLE_EQ(springTensionDerivative(k, r, c, knee + 3.0), slope);
+  EXPECT_NEAR(springTension(k, r, c, knee + 3.0), springTension(k, r, c, knee) + 3.0 * slope, 1e-9 * slope);
+  checkAgainstFiniteDifferences(link, Vec3(0, 0, 0), Vec3(knee + 0.5, 0.1, 0));
+  EXPECT_TRUE(std::isfinite(linkEnergy(link, Vec3::Zero(), Vec3(1e6, 0, 0))));
+  EXPECT_TRUE(linkForce(link, Vec3::Zero(), Vec3(1e6, 0, 0)).allFinite());
+  // a huge exponent is capped at kExpMaxExponent before the strain cap
+  const Link steep = makeLink(k, r, StiffnessLaw::Exponential, 1e4);
+  EXPECT_TRUE(linkHessian(steep, Vec3::Zero(), Vec3(3.0, 0, 0)).allFinite());
+  EXPECT_NEAR(linkHessian(steep, Vec3::Zero(), Vec3(3.0, 0, 0)).coeff(0, 0), k * std::exp(kExpMaxExponent),
+              1e-9 * k * std::exp(kExpMaxExponent));
+  // b = 0 or a zero rest length is the constant law
+  EXPECT_TRUE(stiffeningCoefficient(makeLink(k, r, StiffnessLaw::Exponential, 0.0)).linear());
+  EXPECT_TRUE(stiffeningCoefficient(makeLink(k, 0.0, StiffnessLaw::Exponential, 6.0)).linear());
 }
 
 TEST(SpringKernels, ForceIsHookesLaw) {

@@ -8,8 +8,10 @@
 //
 // Spring force on node a from link (a, b):  F = k(s) (l − r) u,  u = (x_b − x_a)/l,
 // l = |x_b − x_a|, r = rest length, s = (l − r)/r the strain. The stiffness is either
-// constant, k(s) = k0, or stiffening in tension, k(s) = k0 (1 + gain·max(s, 0)²), the
-// usual shape of vessel wall (collagen recruitment).
+// constant, k(s) = k0, or stiffening in tension, the usual shape of vessel wall (collagen
+// recruitment): polynomial, k(s) = k0 (1 + gain·max(s, 0)²), or exponential (Fung-type),
+// tension T = k0 r (e^{b s} − 1)/b for s > 0 with b = gain, so that dT/dl = k0 e^{b s}
+// (spring_kernels.h has the equations and the overflow guard).
 //
 // Cutting removes links without rebuilding anything: a removed link stays in `links`
 // and in the adjacency, marked dead, and every kernel skips it. Indices stay valid, so
@@ -33,6 +35,7 @@ using Points = Eigen::Matrix3Xd;
 enum class StiffnessLaw : std::uint8_t {
   Constant,    ///< k(s) = k0
   Stiffening,  ///< k(s) = k0 (1 + gain·max(s, 0)²)
+  Exponential, ///< T = k0 r (e^{gain·s} − 1)/gain for s > 0, k0 (l − r) for s ≤ 0 (Fung-type)
 };
 
 struct Link {
@@ -40,7 +43,7 @@ struct Link {
   int b = 0;
   double rest = 0.0;       ///< rest length (mm), ≥ 0
   double k = 0.0;          ///< base stiffness k0 (g/s²), ≥ 0
-  double gain = 0.0;       ///< stiffening gain (dimensionless), used by StiffnessLaw::Stiffening
+  double gain = 0.0;       ///< stiffening gain (dimensionless): Stiffening's gain, Exponential's b
   StiffnessLaw law = StiffnessLaw::Constant;
   bool alive = true;       ///< false once cut
 };

@@ -27,7 +27,8 @@
 //   {"type": "severed-vessel", "name", "gap" (mm between the cut ends, 0.5), "center"
 //    ([x,y,z] mm, midpoint of the gap), "axis" ([x,y,z], from end 0 to end 1), and the
 //    vessel fields "preset", "radius", "wall_thickness", "length", "rings",
-//    "nodes_per_ring", "k_layer", "k_between", "mass", "damping", "clamp_first_ring"}:
+//    "nodes_per_ring", "k_layer", "k_between", "mass", "damping", "clamp_first_ring",
+//    "material" (as for "vessel" in spring_scene.h)}:
 //    two vessel ends, each clamped at its far ring, their cut ends facing across the gap.
 // FORCEPS: {"hand": "left"|"right" (required), "mesh" (required, OBJ/glTF of one jaw,
 //    relative to the scene file), "scale" (mm per file unit, 1), "opening_deg" (20),

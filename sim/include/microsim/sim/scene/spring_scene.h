@@ -14,7 +14,11 @@
 //    "spacing" (mm, 1), "fix_bottom" (true)}
 //   {"type": "vessel", "preset": "paper" | "fine", "radius", "wall_thickness",
 //    "length" (mm), "rings", "nodes_per_ring", "k_layer", "k_between", "mass",
-//    "damping", "clamp_first_ring", "origin" [x,y,z], "direction" [x,y,z]}  (VesselDef)
+//    "damping", "clamp_first_ring", "origin" [x,y,z], "direction" [x,y,z], "material":
+//    {"youngs_modulus" (g/(mm·s²) = Pa, 3e5), "fung_exponent" (6), "density" (g/mm³,
+//    1.06e-3), "damping_ratio" (1)}}  (VesselDef, WallMaterial: with a material the links
+//    follow the exponential law with k0 = E·A/L and masses come from the density; an
+//    explicit "k_layer", "k_between", "mass" or "damping" still wins)
 //   {"type": "grid", "cells": [cx, cy] (100 by 100), "size" (cell edge, mm, 1),
 //    "stiffness", "mass", "fix_border" (false)}
 //   {"type": "tetra-lattice", "size": [nx, ny, nz] (146, 70, 4), "spacing", "stiffness",

@@ -5,17 +5,32 @@
 // model are in spring_kernels.cpp.
 //
 // One link (a, b), rest length r ≥ 0, base stiffness k0, length l = |x_b − x_a|,
-// stretch Δ = l − r, unit direction u = (x_b − x_a) / l:
+// stretch Δ = l − r, strain s = Δ / r, unit direction u = (x_b − x_a) / l. The laws of
+// spring_model.h, written in Δ so that the kernels never divide by r:
 //
-//   tension   T(l)  = k0 Δ (1 + c·max(Δ, 0)²)      c = gain / r² (Stiffening), 0 (Constant)
-//   energy    E(l)  = k0 (Δ²/2 + c·max(Δ, 0)⁴/4)   so that dE/dl = T
+//   Constant     T(l) = k0 Δ                           E(l) = k0 Δ²/2
+//   Stiffening   T(l) = k0 Δ (1 + c·Δ₊²)                E(l) = k0 (Δ²/2 + c·Δ₊⁴/4)
+//                c = gain / r² (1/mm²), Δ₊ = max(Δ, 0); this is k(s) = k0 (1 + gain·s₊²)
+//   Exponential  for Δ > 0, with β = b / r (1/mm), b = gain (Fung's exponent), x = βΔ = b s:
+//                T(l) = k0 (e^x − 1)/β  = k0 r (e^{b s} − 1)/b
+//                T'(l) = k0 e^x
+//                E(l) = k0 (e^x − 1 − x)/β²  = k0 r² (e^{b s} − 1 − b s)/b²
+//                for Δ ≤ 0 the constant law: T, T' and E meet it with value and slope at
+//                Δ = 0 (T is C¹, E is C²), so compression stays linear
 //   force on a      = T u = (T / l)(x_b − x_a)      (on b: the opposite)
-//   stiffness T'(l) = k0 (1 + 3c·max(Δ, 0)²)
 //
-// This is the law of spring_model.h: k(s) = k0 (1 + gain·max(s, 0)²) with strain
-// s = Δ / r gives T = k(s) Δ. A zero-rest spring (r = 0) does not stiffen (c = 0, the
-// strain is undefined) and is then the linear spring T = k0 l, whose force k0 (x_b − x_a)
-// is defined even when the nodes coincide.
+// Fung, "Biomechanics: mechanical properties of living tissues" (2nd ed., 1993), ch. 8:
+// the exponential stress–strain law of soft tissue, here in one dimension per link.
+//
+// Overflow guard (Exponential): past the knee Δ* = min(kExpStrainCap·r, kExpMaxExponent/β)
+// — strain 5 (the link at 6× its rest length) or an exponent of 50, whichever comes first —
+// the law continues linearly with the knee's slope: T = T* + T'*·(Δ − Δ*), T' = T'*,
+// E = E* + T*·(Δ − Δ*) + T'*·(Δ − Δ*)²/2. Tissue tears long before (scene limits, strain
+// ≈ 0.6), so the knee only keeps a wild solver iterate finite; T, T' and E stay continuous.
+//
+// A zero-rest spring (r = 0) does not stiffen (the strain is undefined) and is then the
+// linear spring T = k0 l, whose force k0 (x_b − x_a) is defined even when the nodes
+// coincide; an exponential link with b ≤ 0 is the constant law (its b → 0 limit).
 //
 // The Hessian of E with respect to x_a (3 by 3; the link's 6 by 6 Hessian is
 // [H −H; −H H]) is
@@ -44,35 +59,86 @@ namespace microsim::sim {
 /// Lengths below this (mm) count as coincident nodes.
 inline constexpr double kMinLength = 1e-12;
 
-/// The stiffening coefficient c = gain / r² (1/mm²), 0 for a constant or zero-rest link.
-inline double stiffeningCoefficient(const Link& link) {
-  if (link.law != StiffnessLaw::Stiffening || link.rest <= kMinLength) return 0.0;
-  return link.gain / (link.rest * link.rest);
+/// Exponential law: the strain (l − r)/r past which the law continues linearly.
+inline constexpr double kExpStrainCap = 5.0;
+/// Exponential law: the largest exponent b·s evaluated, whatever b (e^50 ≈ 5·10²¹).
+inline constexpr double kExpMaxExponent = 50.0;
+
+/// How a link stiffens, in the per-stretch terms the kernels use; both zero for a linear
+/// link, at most one nonzero. Two doubles, so solvers can cache it per neighbour.
+struct Stiffening {
+  double c = 0.0;     ///< Stiffening law: gain / r² (1/mm²)
+  double beta = 0.0;  ///< Exponential law: b / r (1/mm)
+
+  /// True when T' = k0 at every length (the constant law).
+  bool linear() const { return c == 0.0 && beta == 0.0; }
+};
+
+/// The stiffening terms of `link`: zero for a constant, zero-rest or b ≤ 0 link.
+inline Stiffening stiffeningCoefficient(const Link& link) {
+  if (link.rest <= kMinLength) return {};
+  if (link.law == StiffnessLaw::Stiffening) return {link.gain / (link.rest * link.rest), 0.0};
+  if (link.law == StiffnessLaw::Exponential && link.gain > 0.0)
+    return {0.0, link.gain / link.rest};
+  return {};
 }
 
+namespace detail {
+
+/// The knee Δ* (mm) of an exponential link with rest r and rate β (see the header).
+inline double springExpKnee(double rest, double beta) {
+  return std::min(kExpStrainCap * rest, kExpMaxExponent / beta);
+}
+
+/// Exponential law for x = βΔ ≥ 0: e^x − 1 and e^x − 1 − x, the latter by its series for
+/// small x, where the difference would cancel.
+inline double springExpm1(double x) { return std::expm1(x); }
+inline double springExpm1MinusX(double x) {
+  if (x < 1e-2) return x * x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 + x / 720.0))));
+  return std::expm1(x) - x;
+}
+
+}  // namespace detail
+
 /// Tension T(l) (µN) of a link with base stiffness k, rest length r and stiffening c.
-inline double springTension(double k, double rest, double c, double length) {
+inline double springTension(double k, double rest, const Stiffening& c, double length) {
   const double d = length - rest;
+  if (c.beta > 0.0 && d > 0.0) {
+    const double knee = detail::springExpKnee(rest, c.beta);
+    const double t = k * detail::springExpm1(c.beta * std::min(d, knee)) / c.beta;
+    return d > knee ? t + k * std::exp(c.beta * knee) * (d - knee) : t;
+  }
   const double dp = std::max(d, 0.0);
-  return k * d * (1.0 + c * dp * dp);
+  return k * d * (1.0 + c.c * dp * dp);
 }
 
 /// dT/dl (g/s²).
-inline double springTensionDerivative(double k, double rest, double c, double length) {
-  const double dp = std::max(length - rest, 0.0);
-  return k * (1.0 + 3.0 * c * dp * dp);
+inline double springTensionDerivative(double k, double rest, const Stiffening& c, double length) {
+  const double d = length - rest;
+  if (c.beta > 0.0 && d > 0.0)
+    return k * std::exp(c.beta * std::min(d, detail::springExpKnee(rest, c.beta)));
+  const double dp = std::max(d, 0.0);
+  return k * (1.0 + 3.0 * c.c * dp * dp);
 }
 
 /// Energy E(l) (nJ).
-inline double springEnergy(double k, double rest, double c, double length) {
+inline double springEnergy(double k, double rest, const Stiffening& c, double length) {
   const double d = length - rest;
+  if (c.beta > 0.0 && d > 0.0) {
+    const double knee = detail::springExpKnee(rest, c.beta);
+    const double e = k * detail::springExpm1MinusX(c.beta * std::min(d, knee)) / (c.beta * c.beta);
+    if (d <= knee) return e;
+    const double t = k * detail::springExpm1(c.beta * knee) / c.beta;
+    const double over = d - knee;
+    return e + t * over + 0.5 * k * std::exp(c.beta * knee) * over * over;
+  }
   const double dp2 = std::max(d, 0.0) * std::max(d, 0.0);
-  return k * (0.5 * d * d + 0.25 * c * dp2 * dp2);
+  return k * (0.5 * d * d + 0.25 * c.c * dp2 * dp2);
 }
 
 /// T / l, the factor that turns x_b − x_a into the force on a (g/s²). Finite for l → 0
 /// only for zero-rest links; callers handle length < kMinLength themselves.
-inline double springTensionOverLength(double k, double rest, double c, double length) {
+inline double springTensionOverLength(double k, double rest, const Stiffening& c, double length) {
   return springTension(k, rest, c, length) / length;
 }
 
@@ -90,7 +156,7 @@ inline double linkEnergy(const Link& link, const Vec3& xa, const Vec3& xb) {
 }
 
 /// ∂²E/∂x_a² of one spring (3 by 3, g/s²); `clamp` projects it to PSD (see above).
-inline Eigen::Matrix3d springHessian(double k, double rest, double c, const Vec3& xa,
+inline Eigen::Matrix3d springHessian(double k, double rest, const Stiffening& c, const Vec3& xa,
                                      const Vec3& xb, bool clamp) {
   const Vec3 d = xb - xa;
   const double l = d.norm();
