@@ -36,8 +36,18 @@ std::int64_t TissueContact::cellKey(int ix, int iy, int iz) const {
 }
 
 void TissueContact::buildGrid(const Points& x) const {
+  // the grid built last still serves while no node has moved half the slack from where it
+  // was then (boxes were grown by reach + slack; see the header)
+  const double slack = params_.reach;
+  if (gridX_.cols() == x.cols()) {
+    double moved2 = 0.0;
+    for (Eigen::Index i = 0; i < x.cols() && moved2 <= 0.25 * slack * slack; ++i)
+      moved2 = std::max(moved2, (x.col(i) - gridX_.col(i)).squaredNorm());
+    if (moved2 <= 0.25 * slack * slack) return;
+  }
+  gridX_ = x;
   grid_.clear();
-  const double r = params_.reach;
+  const double r = params_.reach + slack;
   const auto& triangles = tissue_.triangles();
   for (int f = 0; f < static_cast<int>(triangles.size()); ++f) {
     const auto& t = triangles[static_cast<std::size_t>(f)];

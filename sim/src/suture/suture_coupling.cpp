@@ -81,21 +81,41 @@ SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX
   return controls;
 }
 
+namespace {
+
+/// The point of the needle polyline (nodes 0..swage) nearest p (mm).
+Vec3 couplingNeedlePoint(const SutureModel& model, const Points& x, const Vec3& p) {
+  Vec3 best = x.col(0);
+  for (int k = 0; k < model.swage(); ++k) {
+    const Vec3 a = x.col(k);
+    const Vec3 d = x.col(k + 1) - a;
+    const double squared = d.squaredNorm();
+    const double t = squared > 0.0 ? std::clamp((p - a).dot(d) / squared, 0.0, 1.0) : 0.0;
+    if ((a + t * d - p).squaredNorm() < (best - p).squaredNorm()) best = a + t * d;
+  }
+  return best;
+}
+
+}  // namespace
+
 std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
                                          const SutureModel& model, const SutureState& state,
                                          std::span<const Grip> grips, const CouplingParams& params) {
   const std::vector<PierceTension> tensions = pierceTensions(model, state, grips);
   std::vector<PointSpring> springs;
   for (std::size_t k = 0; k < tensions.size(); ++k) {
-    if (!tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
     const Pierce& p = state.pierces[k];
+    const bool passive = model.needleLinks() > 0 && p.node < model.swage();
+    if (!passive && !tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
     const std::array<int, 3>& t = tissue.triangles()[static_cast<std::size_t>(p.face)];
     PointSpring s;
     for (std::size_t c = 0; c < 3; ++c) {
       s.nodes[c] = t[c];
       s.weights[c] = p.barycentric[static_cast<Eigen::Index>(c)];
     }
-    s.anchor = tissuePoint(tissue, tissueX, p.face, p.barycentric) + params.gain * tensions[k].pull;
+    // a hole the needle passes through stays on the needle; a thread pulls its hole
+    s.anchor = passive ? couplingNeedlePoint(model, state.x, p.point)
+                       : Vec3(tissuePoint(tissue, tissueX, p.face, p.barycentric) + params.gain * tensions[k].pull);
     s.k = params.stiffness;
     springs.push_back(s);
   }

@@ -20,9 +20,12 @@
 // looks again for nodes that the solve carried into a face without a term (violations); those
 // are added and the solve repeats, at most a few rounds (scene.cpp).
 //
-// Cost. A uniform grid of the faces' boxes (cell = the largest of the mean edge and 2·reach),
-// a sorted list of (cell, face) rebuilt per detection: O(F log F + N log F) for F faces and N
-// surface nodes. The scene looks again only when the tissue has moved.
+// Cost. A uniform grid of the faces' boxes, grown by reach + slack (slack = reach; cell = the
+// largest of the mean edge and 2·reach), as a sorted list of (cell, face): O(F log F) to build
+// for F faces. It is rebuilt only once some node has moved more than slack/2 since it was
+// built: until then a node within reach of a face still lies in that face's grown box (each
+// has moved at most slack/2). A query is O(N log F) for N surface nodes. The scene looks
+// again only when the tissue has moved.
 //
 // Units: mm, stiffness g/s².
 
@@ -79,6 +82,7 @@ class TissueContact {
   std::vector<int> surfaceNodes_;
   // the grid, rebuilt for each query at its positions: (cell, face) sorted
   mutable std::vector<std::pair<std::int64_t, int>> grid_;
+  mutable Points gridX_{3, 0};  ///< the positions the grid was built at
 };
 
 }  // namespace microsim::sim::collide

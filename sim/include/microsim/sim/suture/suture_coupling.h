@@ -37,7 +37,10 @@
 // stiffness then limits how far the point goes: a soft wall follows the thread, a stiff one
 // (or one held by the other hand) stretches the thread instead, and the thread's tension is
 // k times what is left, T = k |anchor − P| after the solve. Only the pierced point is pulled,
-// so one pass through a wall no longer carries its whole face rigidly.
+// so one pass through a wall no longer carries its whole face rigidly. A passive pierce (the
+// rigid needle still passes through it) ties its point to the nearest point of the needle in
+// the same way: the hole moves with the needle, so a wall pushed by a jaw or another pierce
+// does not slide off the needle.
 //
 // Units: millimetres.
 
@@ -85,7 +88,8 @@ SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX
                                 std::span<const Grip> grips, const CouplingParams& params = {});
 
 /// The two-way coupling: one spring per pierce that pulls or holds (SutureState::pierces
-/// order among them), from the pierce point to P + gain·pull(P), of the thread's stiffness.
+/// order among them), from the pierce point to P + gain·pull(P), or to the needle for a
+/// passive pierce, of the thread's stiffness.
 std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
                                          const SutureModel& model, const SutureState& state,
                                          std::span<const Grip> grips, const CouplingParams& params = {});
