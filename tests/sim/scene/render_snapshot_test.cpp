@@ -17,7 +17,7 @@ namespace {
 
 const std::string kSnapshotTestRoot = MICROSIM_SOURCE_DIR;
 
-SceneDef anastomosis() {
+SceneDef renderSnapshotAnastomosis() {
   SceneDefLoad load = loadSceneDef(kSnapshotTestRoot + "/resources/scenes/anastomosis.json");
   EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
   return std::get<SceneDef>(std::move(load));
@@ -37,7 +37,7 @@ TEST(RenderSnapshot, NormalsOfAFlatSquareAreItsUnitNormal) {
 }
 
 TEST(RenderSnapshot, MirrorsTheSceneAndFollowsItThroughAStitch) {
-  const SceneDef def = anastomosis();
+  const SceneDef def = renderSnapshotAnastomosis();
   const Recording rec = scriptedStitch(def);
   Scene scene(def);
   RenderSnapshot snap;
