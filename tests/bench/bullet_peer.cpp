@@ -1,11 +1,19 @@
 #include "bullet_peer.h"
 
 #if MICROSIM_HAVE_BULLET
+// Bullet's inline array code trips GCC 12's -Wmaybe-uninitialized once inlined here
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <BulletSoftBody/btDefaultSoftBodySolver.h>
+#include <BulletSoftBody/btDeformableBodySolver.h>
+#include <BulletSoftBody/btDeformableMassSpringForce.h>
+#include <BulletSoftBody/btDeformableMultiBodyConstraintSolver.h>
+#include <BulletSoftBody/btDeformableMultiBodyDynamicsWorld.h>
 #include <BulletSoftBody/btSoftBody.h>
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
 #include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
 #include <btBulletDynamicsCommon.h>
+#pragma GCC diagnostic pop
 #endif
 
 #include <algorithm>
@@ -123,9 +131,94 @@ BulletPeerResult bulletTimeToError(const PullCase& c, double percent, double cap
   return result;
 }
 
+BulletPeerResult bulletSpringTimeToError(const PullCase& c, double percent, double capSeconds,
+                                         const BulletSpringSettings& settings) {
+  BulletPeerResult result;
+  result.settings.iterations = 0;
+  result.settings.dt = settings.dt;
+  result.settings.damping = settings.damping;
+
+  // the model's stiffnesses: at most two values (elastic and "bending" links of the force)
+  const SpringModel& model = c.model;
+  std::vector<double> ks;
+  for (const Link& l : model.links())
+    if (l.alive && std::find(ks.begin(), ks.end(), l.k) == ks.end()) ks.push_back(l.k);
+  if (ks.empty() || ks.size() > 2) return result;
+
+  // a deformable world with no gravity, explicit (symplectic Euler)
+  btSoftBodyRigidBodyCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btDeformableBodySolver deformableSolver;
+  btDeformableMultiBodyConstraintSolver constraintSolver;
+  constraintSolver.setDeformableSolver(&deformableSolver);
+  btDeformableMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &constraintSolver, &config, &deformableSolver);
+  world.setGravity(btVector3(0, 0, 0));
+  world.getWorldInfo().m_gravity.setZero();
+  world.getWorldInfo().m_sparsesdf.Initialize();
+  world.setImplicit(false);
+
+  // the model's nodes at the start state, pinned where fixed or controlled
+  const int n = model.nodeCount();
+  std::vector<btVector3> x(static_cast<std::size_t>(n));
+  std::vector<btScalar> m(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    x[static_cast<std::size_t>(i)] = btVector3(btScalar(c.start.x(0, i)), btScalar(c.start.x(1, i)), btScalar(c.start.x(2, i)));
+    m[static_cast<std::size_t>(i)] = model.isFixed(i) ? btScalar(0) : btScalar(model.mass(i));
+  }
+  for (int k = 0; k < c.controls.size(); ++k)
+    m[static_cast<std::size_t>(c.controls.nodes[static_cast<std::size_t>(k)])] = 0;
+  auto body = std::make_unique<btSoftBody>(&world.getWorldInfo(), n, x.data(), m.data());
+
+  // the links with the model's rest lengths; the second stiffness as the force's "bending" links
+  for (const Link& l : model.links()) {
+    if (!l.alive) continue;
+    if (m[static_cast<std::size_t>(l.a)] == 0 && m[static_cast<std::size_t>(l.b)] == 0) continue;
+    body->appendLink(l.a, l.b, nullptr, false);
+    btSoftBody::Link& link = body->m_links[body->m_links.size() - 1];
+    link.m_rl = btScalar(l.rest);
+    link.m_c1 = link.m_rl * link.m_rl;
+    link.m_bbending = ks.size() == 2 && l.k == ks[1] ? 1 : 0;
+  }
+  body->updateLinkConstants();
+  body->m_bUpdateRtCst = false;
+  body->m_cfg.collisions = 0;
+  body->setActivationState(DISABLE_DEACTIVATION);  // a slow body must not be put to sleep
+  btSoftBody* raw = body.get();
+  world.addSoftBody(raw);
+  btDeformableMassSpringForce force(static_cast<btScalar>(ks[0]), static_cast<btScalar>(settings.damping), true,
+                                    static_cast<btScalar>(ks.size() == 2 ? ks[1] : ks[0]));
+  world.addForce(raw, &force);
+
+  // the control nodes jump to their targets
+  for (int k = 0; k < c.controls.size(); ++k) {
+    const Vec3 t = c.controls.targets.col(k);
+    btSoftBody::Node& node = raw->m_nodes[c.controls.nodes[static_cast<std::size_t>(k)]];
+    node.m_x = node.m_q = btVector3(btScalar(t.x()), btScalar(t.y()), btScalar(t.z()));
+  }
+
+  // step until the error is reached or the cap is spent
+  result.errorPercent = bulletPeerError(*raw, c);
+  while (result.errorPercent > percent && result.seconds < capSeconds) {
+    const double t0 = cpuSeconds();
+    world.stepSimulation(btScalar(settings.dt), 0, btScalar(settings.dt));
+    result.seconds += cpuSeconds() - t0;
+    ++result.steps;
+    result.errorPercent = bulletPeerError(*raw, c);
+  }
+  result.reached = result.errorPercent <= percent;
+  world.removeForce(raw, &force);
+  world.removeSoftBody(raw);
+  return result;
+}
+
 #else
 
 bool bulletPeerAvailable() { return false; }
+
+BulletPeerResult bulletSpringTimeToError(const PullCase&, double, double, const BulletSpringSettings&) {
+  return {};
+}
 
 BulletPeerResult bulletTimeToError(const PullCase&, double, double, const BulletPeerSettings& settings) {
   BulletPeerResult result;
@@ -134,6 +227,26 @@ BulletPeerResult bulletTimeToError(const PullCase&, double, double, const Bullet
 }
 
 #endif
+
+BulletPeerResult bulletSpringBestTimeToError(const PullCase& c, double percent, double capSeconds, bool quick) {
+  std::vector<BulletSpringSettings> tries;
+  if (quick) {
+    tries = {{0.2, 10.0}, {0.5, 10.0}};
+  } else {
+    for (double dt : {0.1, 0.2, 0.5, 1.0})
+      for (double damping : {3.0, 10.0, 30.0}) tries.push_back({dt, damping});
+  }
+  BulletPeerResult best;
+  bool any = false;
+  for (const BulletSpringSettings& s : tries) {
+    const BulletPeerResult r = bulletSpringTimeToError(c, percent, capSeconds, s);
+    const bool better = !any || (r.reached && (!best.reached || r.seconds < best.seconds)) ||
+                        (!r.reached && !best.reached && r.errorPercent < best.errorPercent);
+    if (better) best = r;
+    any = true;
+  }
+  return best;
+}
 
 BulletPeerResult bulletBestTimeToError(const PullCase& c, double percent, double capSeconds, bool quick) {
   std::vector<BulletPeerSettings> tries;
