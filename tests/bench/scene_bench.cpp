@@ -22,9 +22,11 @@
 //                                the scene's gap, 0.5 mm, at rest)
 //   collision/tissue/suture/interactions median and p99 (ms), pierce events, nodes, frames,
 //   tissue error samples (the number of sampled steps) and their stride.
-// k is chosen per case: every step's error is sampled at least 100 times on the default
-// scene; ~20 times on the fine one (each reference solve of 10k nodes costs about a second).
-// The metrics are computed between steps, outside the stage times.
+// k is chosen per case: the error is sampled on at least 100 steps of the default scene's
+// stitch (every 4th of 460), on 20 of the fine one's (every 23rd: a reference solve of 10k
+// nodes is dear; with 20 samples the p99 is the max). The metrics are computed between
+// steps, outside the stage times. The fine cases take minutes: their own steps reach
+// seconds at the pull.
 #include "scene_bench.h"
 
 #include "bench_clock.h"

@@ -9,7 +9,7 @@
 // "cost follows the deforming region" is a fair claim, see beddedVessel). Times are CPU
 // milliseconds of the measuring thread. peer = qss's time, ratio = qss / ours (> 1:
 // faster than qss). --quick runs the same cases on a 6³ box and smaller meshes, each sweep
-// capped at 50 ms and each budget timed once (about 6 s of CPU).
+// capped at 50 ms and each budget timed once (about 6 s of CPU, 7 s with the Bullet peer).
 //
 // A peer library in the same run (issue 17): Bullet's soft body (bullet_peer.h) on the 20³
 // box (the paper's pull, cold: 1 unit from rest) and on the default vessel (the tissue of
