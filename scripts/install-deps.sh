@@ -9,6 +9,8 @@ packages=(
   build-essential cmake ninja-build pkg-config git ccache
   # engine
   libeigen3-dev nlohmann-json3-dev libassimp-dev libfcl-dev
+  # benchmark peers (tests/bench, never linked by the engine): Bullet's soft body
+  libbullet-dev
   # Qt 6: widgets, OpenGL, SQL (SQLite and PostgreSQL drivers), charts, network, translations
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6sql6-sqlite libqt6sql6-psql qt6-charts-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools linguist-qt6 qt6-svg-dev qt6-translations-l10n

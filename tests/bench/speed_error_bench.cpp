@@ -9,18 +9,35 @@
 // "cost follows the deforming region" is a fair claim, see beddedVessel). Times are CPU
 // milliseconds of the measuring thread. peer = qss's time, ratio = qss / ours (> 1:
 // faster than qss). --quick runs the same cases on a 6³ box and smaller meshes, each sweep
-// capped at 50 ms and each budget timed once (about 6 s of CPU).
+// capped at 50 ms and each budget timed once (about 6 s of CPU, 7 s with the Bullet peer).
+//
+// A peer library in the same run (issue 17): Bullet's soft body (bullet_peer.h) on the 20³
+// box (the paper's pull, cold: 1 unit from rest) and on the default vessel (the tissue of
+// resources/scenes/anastomosis.json, end 0's outer cut-ring node of sector 0 pulled 0.3 mm
+// radially out, cold), against our newton on the same case: rows "20^3 box" and
+// "anastomosis vessel", metric "time to 1% error", ours as the value, as peer Bullet's
+// deformable soft body with its mass-spring force (the same spring law, so the same
+// equilibrium), ratio = Bullet / ours (> 1: we are faster); metric "time to 1% error,
+// bullet PBD links" the same with Bullet's classic btSoftBody, whose position-based links
+// settle elsewhere (bullet_peer.h). A peer that does not reach 1 % in its cap shows the cap
+// as peer, says so in the unit, and its rows give the error it ended at. Each Bullet setting
+// gets up to 3 s of CPU (0.2 s under --quick, on the 6³ box); the best setting counts and
+// is reported.
 #include "bench_report.h"
+#include "bullet_peer.h"
 #include "tissue_bench_util.h"
 #include "tissue_benches.h"
 
 #include "microsim/sim/mesh/lattice.h"
 #include "microsim/sim/mesh/tetra_lattice.h"
 #include "microsim/sim/mesh/vessel.h"
+#include "microsim/sim/scene/scene_def.h"
 
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
+#include <variant>
 
 namespace microsim::bench {
 
@@ -126,6 +143,67 @@ double measure(const PullCase& c, const Effort& effort, BenchReport& report,
   return curves["newton"].timeTo(1.0);
 }
 
+/// Our newton against Bullet's soft body on one cold pull: the time to 1 % error, beside
+/// Bullet's mass-spring (deformable) soft body and its classic PBD soft body.
+void measureAgainstBullet(const PullCase& c, bool quick, BenchReport& report) {
+  const double cap = quick ? 0.2 : 3.0;
+  const double ours = sweepErrorAgainstTime(c, "newton", benchParams("newton"), 1.0, cap, quick ? 1 : 3).timeTo(1.0);
+  const auto peerRow = [&](const std::string& metric, const BulletPeerResult& bullet) {
+    BenchRow row;
+    row.bench = "speed-error";
+    row.caseName = c.name;
+    row.metric = metric;
+    row.value = ours >= 0.0 ? ours : 1e3 * cap;
+    row.unit = ours >= 0.0 ? "ms CPU" : "ms CPU (not reached; cap)";
+    if (bullet.reached) {
+      row.peer = 1e3 * bullet.seconds;
+      if (ours > 0.0) row.ratio = *row.peer / ours;
+    } else {
+      row.peer = 1e3 * cap;
+      row.unit += ", peer not reached: cap";
+    }
+    report.rows.push_back(row);
+  };
+  const auto detailRow = [&](const std::string& metric, double value, const std::string& unit) {
+    report.rows.push_back({"speed-error", c.name, metric, value, unit, {}, {}, {}});
+  };
+
+  // Bullet's spring law (the same equilibrium as ours): the peer of the row
+  const BulletPeerResult spring = bulletSpringBestTimeToError(c, 1.0, cap, quick);
+  peerRow("time to 1% error", spring);
+  detailRow(spring.reached ? "bullet springs: error reached" : "bullet springs: error at cap (1% not reached)",
+            spring.errorPercent, "%");
+  detailRow("bullet springs: steps", spring.steps, "steps");
+  detailRow("bullet springs: dt", spring.settings.dt, "s");
+  detailRow("bullet springs: damping", spring.settings.damping, "g/s");
+
+  // Bullet's classic soft body (PBD links, its own equilibrium)
+  const BulletPeerResult pbd = bulletBestTimeToError(c, 1.0, cap, quick);
+  peerRow("time to 1% error, bullet PBD links", pbd);
+  detailRow(pbd.reached ? "bullet PBD: error reached" : "bullet PBD: error at cap (1% not reached)", pbd.errorPercent, "%");
+  detailRow("bullet PBD: steps", pbd.steps, "steps");
+  detailRow("bullet PBD: piterations", pbd.settings.iterations, "per step");
+  detailRow("bullet PBD: kDP", pbd.settings.damping, "");
+  detailRow("bullet PBD: kLST scale", pbd.settings.stiffness, "x k/k_max");
+}
+
+/// The default vessel: the tissue of the shipped anastomosis scene, end 0's outer cut-ring
+/// node of sector 0 pulled 0.3 mm radially out from rest.
+std::optional<PullCase> anastomosisVesselPull() {
+  SceneDefLoad load = loadSceneDef(std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/anastomosis.json");
+  if (!std::holds_alternative<SceneDef>(load)) return std::nullopt;
+  const SceneDef& def = std::get<SceneDef>(load);
+  for (const SceneVessel& v : def.vessels) {
+    if (v.end != 0) continue;
+    const int node = v.firstNode + ((v.def.rings - 1) * 2 + 1) * v.def.nodesPerRing;
+    const Vec3 axis = v.def.direction.normalized();
+    Vec3 radial = def.tissue.model.restPositions().col(node) - v.def.origin;
+    radial = (radial - radial.dot(axis) * axis).normalized();
+    return coldPull("anastomosis vessel", def.tissue.model, node, 0.3 * radial);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 BenchReport runSpeedError(const BenchOptions& options) {
@@ -152,7 +230,8 @@ BenchReport runSpeedError(const BenchOptions& options) {
                        Vec3(0, 0, 1)});
 
   // every scenario warm and cold, then the fine vessel and the two bedded vessels
-  BenchProgress progress(options.progress, 2 * static_cast<int>(scenarios.size()) + 3);
+  const bool bullet = bulletPeerAvailable();
+  BenchProgress progress(options.progress, 2 * static_cast<int>(scenarios.size()) + 3 + (bullet ? 2 : 0));
   for (const Scenario& s : scenarios)
     for (int warm = 1; warm >= 0; --warm) {
       const std::string name = s.name + (warm ? ", warm" : ", cold");
@@ -205,6 +284,16 @@ BenchReport runSpeedError(const BenchOptions& options) {
   longRow.value = (tShort > 0.0 && tLong > 0.0) ? tLong / tShort : -1.0;
   longRow.unit = "x";
   report.rows.push_back(longRow);
+
+  // the peer library: Bullet's soft body against our newton, time to 1 %
+  if (bullet) {
+    const std::string boxName = std::to_string(n) + "^3 box";
+    progress.next(boxName + ", bullet");
+    measureAgainstBullet(coldPull(boxName, latticeBox(n, 10.0), latticeTopMiddle(n), Vec3(0, 0, 1)), quick, report);
+    progress.next("anastomosis vessel, bullet");
+    if (const std::optional<PullCase> vesselPull = anastomosisVesselPull())
+      measureAgainstBullet(*vesselPull, quick, report);
+  }
   return report;
 }
 
