@@ -53,6 +53,8 @@ void TissueContact::buildGrid(const Points& x) const {
     const auto& t = triangles[static_cast<std::size_t>(f)];
     Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - r;
     Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + r;
+    // a face torn far apart (or not finite) is left out rather than spread over the grid
+    if (!lo.allFinite() || !hi.allFinite() || ((hi - lo).array() > 64.0 * cell_).any()) continue;
     const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
     const Eigen::Vector3i b = (hi / cell_).array().floor().cast<int>();
     for (int ix = a.x(); ix <= b.x(); ++ix)
@@ -64,13 +66,14 @@ void TissueContact::buildGrid(const Points& x) const {
 
 std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius) const {
   const Vec3 p = x.col(node);
+  if (!p.allFinite()) return {-1, 0.0};
   const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
   const std::int64_t key = cellKey(c.x(), c.y(), c.z());
   const auto first = std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
   const auto rest = tissue_.restPositions();
   const double self2 = params_.selfDistance * params_.selfDistance;
   int best = -1;
-  double bestDistance = radius;
+  double bestScore = std::numeric_limits<double>::infinity();
   double bestSigned = 0.0;
   for (auto it = first; it != grid_.end() && it->first == key; ++it) {
     const int f = it->second;
@@ -80,11 +83,16 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
       if (v == node || (rest.col(v) - rest.col(node)).squaredNorm() < self2) eligible = false;
     if (!eligible) continue;
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
-    if (!(q.distance < bestDistance)) continue;
-    const Vec3 normal = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0]));
+    if (!(q.distance < radius)) continue;
+    const Vec3 normal = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).normalized();
     const double side = normal.dot(p - q.point);
+    // at an edge or a corner several faces are equally near; the one the node faces (p − q
+    // along its normal) is the one it would pass through, not the one it slides along
+    const double facing = q.distance > 1e-12 ? std::abs(side) / q.distance : 1.0;
+    const double score = q.distance * (2.0 - facing);
+    if (!(score < bestScore)) continue;
     best = f;
-    bestDistance = q.distance;
+    bestScore = score;
     bestSigned = side < 0.0 ? -q.distance : q.distance;
   }
   return {best, bestSigned};

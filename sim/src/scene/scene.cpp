@@ -366,7 +366,6 @@ constexpr int kContactRounds = 3;
 std::vector<std::uint8_t> Scene::jawSkip() const {
   const SpringModel& tissue = def_.tissue.model;
   std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
-  for (int i = 0; i < tissue.nodeCount(); ++i) skip[static_cast<std::size_t>(i)] = tissue.isFixed(i) ? 1 : 0;
   for (const auto& f : forceps_)
     if (f)
       for (int n : f->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
@@ -399,8 +398,8 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
     for (int h = 0; h < kHandCount; ++h) {
       const auto& f = forceps_[static_cast<std::size_t>(h)];
       if (f && jawsPlaced_[static_cast<std::size_t>(h)])
-        tools::appendJawContacts(*f, state_.x, contact_->surfaceNodes(), skip, def_.contact.params.reach,
-                                 contact_->stiffness(), controls_.springs);
+        tools::appendJawContacts(*f, tissue, state_.x, skip, def_.contact.params.reach, contact_->stiffness(),
+                                 controls_.springs);
     }
   }
 

@@ -137,6 +137,10 @@ std::vector<ExpectedPierce> stitchPierces(const SceneDef& scene, const StitchScr
   return out;
 }
 
+/// How far the tools open their jaws at the needle beside the walls (closure 1 − this): just
+/// past letting go at the scenes' close_at of 0.8, about 0.2 mm between the tips.
+constexpr double kStitchSlightOpening = 0.25;
+
 Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   Recording rec;
   const std::optional<Pass> p = pass(scene, def);
@@ -144,9 +148,9 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   rec.metadata = R"({"script":"stitch","version":1})";
   const StitchGeometry& g = p->g;
   const suture::SutureModel needle(scene.needle->suture);
-  // both tools take the needle across its plane, jaws along the needle frame's normal (the
-  // tool's +x, from the tips back to the hinge, turned onto the needle's z): as a needle
-  // holder is held, so that the jaws stay out of the walls the needle turns through
+  // both tools take the needle across its plane, jaws (the tool's +x, from the tips back to
+  // the hinge) along the needle frame's normal: the one direction that does not turn as the
+  // needle turns, so the jaws stay beside the arc rather than sweep through the walls
   const auto gripAt = [&](int node) {
     Eigen::Isometry3d grip = Eigen::Isometry3d::Identity();
     grip.linear() = Eigen::AngleAxisd(-0.5 * std::numbers::pi, Vec3::UnitY()).toRotationMatrix();
@@ -192,13 +196,15 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   // 4. the holder lets go; the forceps takes the needle behind its tip
   const Eigen::Isometry3d last = needleAt(g, stop);
   for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
-    w.hand(Hand::Right, Instrument::NeedleHolder, last * holderGrip, 1.0 - static_cast<double>(k) / n);
+    // opened no further than it takes to let go (a closure just under close_at): a jaw opened
+    // wide would swing down into the wall below
+    w.hand(Hand::Right, Instrument::NeedleHolder, last * holderGrip, 1.0 - kStitchSlightOpening * k / n);
     w.hand(Hand::Left, Instrument::Forceps, park, 0.0);
     w.emit();
   }
   w.hand(Hand::Right, Instrument::NeedleHolder, parkRight, 0.0);
   for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
-    w.hand(Hand::Left, Instrument::Forceps, last * forcepsGrip, static_cast<double>(k) / n);
+    w.hand(Hand::Left, Instrument::Forceps, last * forcepsGrip, 1.0 - kStitchSlightOpening * (1.0 - static_cast<double>(k) / n));
     w.emit();
   }
   const double out = def.pullOutDeg * kDeg;

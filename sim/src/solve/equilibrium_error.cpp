@@ -23,6 +23,10 @@ EquilibriumError equilibriumError(const SpringModel& model, const SpringState& s
     const int node = controls.nodes[static_cast<std::size_t>(c)];
     e.controlDisplacement = std::max(e.controlDisplacement, (controls.targets.col(c) - rest.col(node)).norm());
   }
+  // a two-sided point spring pulls its point towards its anchor (a thread through a pierce):
+  // its anchor's distance from the point's rest position is a control displacement too
+  for (const PointSpring& s : controls.springs)
+    if (!s.oneSided()) e.controlDisplacement = std::max(e.controlDisplacement, pointSpringOffset(s, rest).norm());
   if (e.controlDisplacement > 0.0) e.ratioPercent = 100.0 * e.maxDistance / e.controlDisplacement;
   return e;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <utility>
 
 namespace microsim::sim::suture {
@@ -83,16 +84,25 @@ SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX
 
 namespace {
 
-/// The point of the needle polyline (nodes 0..swage) nearest p (mm).
-Vec3 couplingNeedlePoint(const SutureModel& model, const Points& x, const Vec3& p) {
+/// The point of the needle polyline (nodes 0..swage) nearest p (mm); none when that is the
+/// tip itself with p beyond it: the needle has been drawn back out of the hole.
+std::optional<Vec3> couplingNeedlePoint(const SutureModel& model, const Points& x, const Vec3& p) {
   Vec3 best = x.col(0);
+  bool beyondTip = true;
   for (int k = 0; k < model.swage(); ++k) {
     const Vec3 a = x.col(k);
     const Vec3 d = x.col(k + 1) - a;
     const double squared = d.squaredNorm();
-    const double t = squared > 0.0 ? std::clamp((p - a).dot(d) / squared, 0.0, 1.0) : 0.0;
-    if ((a + t * d - p).squaredNorm() < (best - p).squaredNorm()) best = a + t * d;
+    const double along = squared > 0.0 ? (p - a).dot(d) / squared : 0.0;
+    const double t = std::clamp(along, 0.0, 1.0);
+    if ((a + t * d - p).squaredNorm() < (best - p).squaredNorm()) {
+      best = a + t * d;
+      beyondTip = false;
+    } else if (k == 0) {
+      beyondTip = along < 0.0;
+    }
   }
+  if (beyondTip) return std::nullopt;
   return best;
 }
 
@@ -107,6 +117,8 @@ std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points
     const Pierce& p = state.pierces[k];
     const bool passive = model.needleLinks() > 0 && p.node < model.swage();
     if (!passive && !tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
+    const std::optional<Vec3> onNeedle = passive ? couplingNeedlePoint(model, state.x, p.point) : std::nullopt;
+    if (passive && !onNeedle) continue;
     const std::array<int, 3>& t = tissue.triangles()[static_cast<std::size_t>(p.face)];
     PointSpring s;
     for (std::size_t c = 0; c < 3; ++c) {
@@ -114,7 +126,7 @@ std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points
       s.weights[c] = p.barycentric[static_cast<Eigen::Index>(c)];
     }
     // a hole the needle passes through stays on the needle; a thread pulls its hole
-    s.anchor = passive ? couplingNeedlePoint(model, state.x, p.point)
+    s.anchor = passive ? *onNeedle
                        : Vec3(tissuePoint(tissue, tissueX, p.face, p.barycentric) + params.gain * tensions[k].pull);
     s.k = params.stiffness;
     springs.push_back(s);

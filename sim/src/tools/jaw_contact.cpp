@@ -1,5 +1,7 @@
 #include "microsim/sim/tools/jaw_contact.h"
 
+#include "microsim/sim/collide/point_triangle.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -32,32 +34,47 @@ std::array<JawCapsule, 2> jawCapsules(const Forceps& forceps) {
   return capsules;
 }
 
-void appendJawContacts(const Forceps& forceps, const Points& x, const std::vector<int>& nodes,
+void appendJawContacts(const Forceps& forceps, const SpringModel& tissue, const Points& x,
                        const std::vector<std::uint8_t>& skip, double reach, double stiffness,
                        std::vector<PointSpring>& out) {
   for (const JawCapsule& c : jawCapsules(forceps)) {
     const Vec3 axis = c.heel - c.tip;
     const double length2 = axis.squaredNorm();
     if (!(length2 > 0.0)) continue;
+    const auto onAxis = [&](const Vec3& p) { return std::clamp((p - c.tip).dot(axis) / length2, 0.0, 1.0); };
     const Vec3 lo = c.tip.cwiseMin(c.heel).array() - (c.heelRadius + reach);
     const Vec3 hi = c.tip.cwiseMax(c.heel).array() + (c.heelRadius + reach);
-    for (int i : nodes) {
-      if (!skip.empty() && skip[static_cast<std::size_t>(i)]) continue;
-      const Vec3 p = x.col(i);
-      if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
-      const double s = std::clamp((p - c.tip).dot(axis) / length2, 0.0, 1.0);
-      const Vec3 onAxis = c.tip + s * axis;
+    for (const auto& t : tissue.triangles()) {
+      if (!skip.empty() && (skip[static_cast<std::size_t>(t[0])] || skip[static_cast<std::size_t>(t[1])] ||
+                            skip[static_cast<std::size_t>(t[2])]))
+        continue;
+      const Vec3 a = x.col(t[0]), b = x.col(t[1]), d = x.col(t[2]);
+      if ((a.cwiseMax(b).cwiseMax(d).array() < lo.array()).any() ||
+          (a.cwiseMin(b).cwiseMin(d).array() > hi.array()).any())
+        continue;
+      // the closest points of the axis and the face, by alternating projections (both convex)
+      double s = onAxis((a + b + d) / 3.0);
+      collide::PointTriangleClosest q{};
+      for (int k = 0; k < 4; ++k) {
+        q = collide::closestPointTriangle(c.tip + s * axis, a, b, d);
+        s = onAxis(q.point);
+      }
+      const Vec3 anchor = c.tip + s * axis;
       const double radius = c.tipRadius + s * (c.heelRadius - c.tipRadius);
-      const Vec3 away = p - onAxis;
-      const double distance = away.norm();
-      if (distance > radius + reach) continue;
+      if ((q.point - anchor).norm() > radius + reach) continue;
+      const Vec3 faceNormal = (b - a).cross(d - a);
+      if (!(faceNormal.norm() > 0.0)) continue;
+      // only a face the jaw is in front of: the wall's far side (the lumen's face under the
+      // top of the wall) is reached through the near one, never directly
+      if (faceNormal.dot(anchor - q.point) < 0.0) continue;
       PointSpring spring;
-      spring.nodes[0] = i;
-      spring.weights[0] = 1.0;
-      spring.anchor = onAxis;
-      // a node on the axis itself is pushed out sideways, across the jaw
-      Vec3 normal = distance > 1e-12 ? Vec3(away / distance) : axis.unitOrthogonal();
-      spring.normal = normal;
+      for (std::size_t v = 0; v < 3; ++v) {
+        spring.nodes[v] = t[v];
+        spring.weights[v] = q.barycentric[static_cast<Eigen::Index>(v)];
+      }
+      spring.anchor = anchor;
+      // the jaw comes from the side the face looks to and pushes the face back into its wall
+      spring.normal = -faceNormal.normalized();
       spring.gap = radius;
       spring.k = stiffness;
       out.push_back(spring);

@@ -56,8 +56,10 @@ class TissueContact {
  public:
   TissueContact(const SpringModel& tissue, const TissueContactParams& params);
 
-  /// Every (node, face) pair within reach at positions x, at most one face per node (the
-  /// closest), in node order.
+  /// Every (node, face) pair within reach at positions x, at most one face per node, in node
+  /// order: the nearest, where an edge or a corner makes several about as near the one the node
+  /// faces most squarely (distance × (2 − |n·(p − q)| / |p − q|) smallest), so that a lip
+  /// pressed onto the other end's cut face meets that face, not the hull it would slide along.
   std::vector<TissueContactPair> near(const Points& x) const;
   /// The pairs whose node lies less than half the thickness in front of (or behind) the face.
   std::vector<TissueContactPair> violations(const Points& x) const;

@@ -39,7 +39,8 @@ struct StitchScriptDef {
   double startDeg = -70.0;    ///< ψ where the pass starts (degrees)
   double endDeg = 70.0;       ///< ψ where the holder lets go (degrees)
   double passSeconds = 1.4;   ///< duration of phase 3 (s)
-  int gripNode = 6;           ///< needle node the holder takes
+  int gripNode = 8;           ///< needle node the holder takes (the swage: its jaws stay clear
+                              ///< of the walls the needle turns through)
   int pullGripNode = 1;       ///< needle node the forceps takes
   double pullOutDeg = 190.0;  ///< ψ the forceps turns the needle to
   double pullMm = 3.0;        ///< then the thread is drawn this far along e_w (mm)

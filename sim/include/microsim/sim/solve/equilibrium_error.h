@@ -9,7 +9,9 @@
 //                        targets)
 //   maxDistance          max_i |x_i − x*_i| over all nodes (mm)
 //   controlDisplacement  max_c |target_c − rest_c| over the controls, rest_c the rest position
-//                        of control c's node (mm): how far the tools have moved the tissue
+//                        of control c's node, and over the two-sided point springs (a thread
+//                        pulling a pierce) |anchor − rest point| (mm): how far the tools have
+//                        moved the tissue; contacts (one-sided) are not controls
 //   ratioPercent         100 · maxDistance / controlDisplacement, 0 when controlDisplacement
 //                        is 0 (no tool has moved anything, nothing to be wrong about)
 //

@@ -3,12 +3,15 @@
 // passing through. Each jaw is taken as a tapered capsule around its own axis, from the tip
 // (jaw frame origin) to the hinge end (L, 0, 0), its radius growing linearly from the tip's
 // to the heel's (the largest distance of the jaw mesh's vertices from the axis near either
-// end), which encloses the jaw mesh. A tissue node within reach of a capsule gets a
-// one-sided point spring (point_spring.h) anchored on the capsule's axis with the normal
-// from the axis to the node and the capsule's radius there as its gap, so the node is kept
-// on the capsule's surface while pressed.
+// end), which encloses the jaw mesh. Every tissue face within reach of a capsule gets a
+// one-sided point spring (point_spring.h) on its point nearest the axis (barycentric weights;
+// the nearest points of the axis segment and the face by alternating projections, four
+// rounds), anchored at the axis point, with the face's inward normal and the capsule's radius
+// there as its gap: the jaw, coming from the side the face looks to, keeps the face a radius
+// away and pushes it back into its wall. Faces, not nodes: a jaw pressed between two nodes
+// dents the face there instead of passing through it.
 //
-// Nodes the forceps holds are left out (they move with the jaws), as are fixed nodes.
+// Faces with a node a forceps holds are left out (they move with the jaws).
 //
 // Units: mm, stiffness g/s².
 
@@ -36,9 +39,10 @@ std::array<double, 2> jawRadii(const ForcepsDef& def);
 /// Both jaws of `forceps` as capsules, upper first.
 std::array<JawCapsule, 2> jawCapsules(const Forceps& forceps);
 
-/// Appends a one-sided spring for every node of `nodes` within `reach` of a jaw's capsule
-/// surface, skipping nodes marked in `skip` (fixed, held by a forceps).
-void appendJawContacts(const Forceps& forceps, const Points& x, const std::vector<int>& nodes,
+/// Appends a one-sided spring for every face of `tissue` within `reach` of a jaw's capsule
+/// surface at positions x, skipping faces with a node marked in `skip` (held by a forceps:
+/// it moves with the jaws).
+void appendJawContacts(const Forceps& forceps, const SpringModel& tissue, const Points& x,
                        const std::vector<std::uint8_t>& skip, double reach, double stiffness,
                        std::vector<PointSpring>& out);
 
