@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 namespace microsim::sim::collide {
 namespace {
@@ -100,6 +102,44 @@ TEST(TissueContact, PlatesApartOrAtRestGiveNoPairs) {
   // the same contact object, after the plates came near: the grid follows the positions
   EXPECT_FALSE(contact.near(tissueContactPlateBAt(model, 0.05)).empty());
   EXPECT_TRUE(contact.near(tissueContactPlateBAt(model, 0.5)).empty());
+}
+
+TEST(TissueContact, AKeptGridFindsWhatAFreshOneFinds) {
+  // the grid built with B out of reach serves while no node moves half the slack (= reach)
+  // from there; pairs that came within reach meanwhile are still found
+  const SpringModel model = tissueContactPlates();
+  const TissueContactParams params;
+  const TissueContact kept(model, params);
+  const Points built = tissueContactPlateBAt(model, 0.14);
+  ASSERT_TRUE(kept.near(built).empty());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::size_t found = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    SCOPED_TRACE(trial);
+    // every node moved by less than half the slack, B mostly down towards A
+    Points x = built;
+    for (Eigen::Index i = 0; i < x.cols(); ++i) {
+      Vec3 move(u(rng), u(rng), u(rng));
+      if (i >= kTissueContactPlateNodes) move.z() = -1.0;
+      x.col(i) += 0.49 * params.reach * move.normalized();
+    }
+    const TissueContact fresh(model, params);
+    const std::vector<TissueContactPair> pairs = kept.near(x);
+    EXPECT_EQ(pairs, fresh.near(x));
+    EXPECT_EQ(kept.violations(x), fresh.violations(x));
+    found += pairs.size();
+  }
+  EXPECT_GT(found, 0u);
+
+  // a move past half the slack rebuilds it: from B 0.45 mm away to 0.05 mm, A's nodes find
+  // B's faces, which were nowhere near A when the grid was built
+  const TissueContact far(model, params);
+  ASSERT_TRUE(far.near(tissueContactPlateBAt(model, 0.45)).empty());
+  const Points close = tissueContactPlateBAt(model, 0.05);
+  const std::vector<TissueContactPair> pairs = far.near(close);
+  EXPECT_EQ(static_cast<int>(pairs.size()), model.nodeCount());
+  EXPECT_EQ(pairs, TissueContact(model, params).near(close));
 }
 
 TEST(TissueContact, WithoutSelfDistanceAPlateTouchesItself) {
