@@ -47,7 +47,8 @@ class SimulationRunner : public QObject {
   explicit SimulationRunner(QObject* parent = nullptr);
   ~SimulationRunner() override;  ///< stops and joins the thread, finishes a recording
 
-  /// Loads a scene file (RealTime for live runs, Deterministic for replays), stopping any run
+  /// Loads a scene file (Deterministic for attempts and replays, so that an attempt's recording
+  /// replays to what was shown; RealTime stops each tissue solve at the step budget), stopping any run
   /// first. Returns false and fills `error` when the file does not load; the previous scene
   /// is then gone too.
   bool load(const QString& scenePath, sim::StepMode mode, sim::SceneError* error = nullptr);

@@ -9,13 +9,13 @@
 
 namespace microsim::testing {
 
-inline constexpr std::uint64_t kGoldenStitchHash = 0x33b0c319b36489f6ULL;
-inline constexpr const char* kGoldenStitchHashText = "33b0c319b36489f6";
+inline constexpr std::uint64_t kGoldenStitchHash = 0x828be1c79fdc458cULL;
+inline constexpr const char* kGoldenStitchHashText = "828be1c79fdc458c";
 
 /// The stitch's score on resources/rubrics/02_needle_entry.json (lesson 2) and on
 /// 03_single_stitch.json (lesson 3). The GUI's lesson flow and `microsim-cli score` are each
 /// held to these, so they agree with each other.
-inline constexpr double kGoldenStitchScoreNeedleEntry = 62.31938160432583;
-inline constexpr double kGoldenStitchScoreSingleStitch = 66.3763863538384;
+inline constexpr double kGoldenStitchScoreNeedleEntry = 62.22835931018216;
+inline constexpr double kGoldenStitchScoreSingleStitch = 66.28536405969467;
 
 }  // namespace microsim::testing

@@ -138,8 +138,11 @@ bool AttemptPage::begin(const lesson::Lesson& lesson, int lessonIndex, assessmen
     *error = tr("The scene %1 cannot be prepared: %2").arg(lesson.scenePath, overrideError);
     return false;
   }
+  // stepped deterministically, live too: the frames the attempt consumed replay to the very
+  // states the trainee saw, and the score is computed on those (a slow step makes the scene
+  // lag the hand rather than show a tissue the score will not see)
   sim::SceneError sceneError;
-  if (!runner_->load(scenePath_, sim::StepMode::RealTime, &sceneError)) {
+  if (!runner_->load(scenePath_, sim::StepMode::Deterministic, &sceneError)) {
     *error = tr("The scene %1 cannot be loaded (field %2, line %3).")
                  .arg(scenePath_, QString::fromStdString(sceneError.field))
                  .arg(sceneError.line);

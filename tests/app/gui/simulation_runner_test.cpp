@@ -100,6 +100,33 @@ TEST(SimulationRunner, LiveStepsWithTheLatestSubmittedFrame) {
   EXPECT_EQ(runner.steps(), after);
 }
 
+// What the trainee sees is what is scored: a live attempt steps deterministically (attempt
+// page), so the frames it consumed replay to the very states it showed, however slow a step.
+TEST(SimulationRunner, ALiveDeterministicRunReplaysToTheStatesItShowed) {
+  SimulationRunner live;
+  ASSERT_TRUE(live.load(kShippedScene, sim::StepMode::Deterministic));
+  std::vector<sim::InputFrame> frames = stitchFrames();
+  frames.resize(std::min<std::size_t>(frames.size(), 120));
+  live.start();
+  for (const sim::InputFrame& f : frames) {
+    const int before = live.steps();
+    live.submitFrame(f);
+    QTRY_VERIFY_WITH_TIMEOUT(live.steps() > before, 10000);
+  }
+  live.stop();
+  const std::uint64_t shown = live.stateHash();
+  const std::vector<sim::InputFrame> consumed = live.consumedFrames();
+  ASSERT_EQ(static_cast<int>(consumed.size()), live.steps());
+
+  SimulationRunner scored;
+  ASSERT_TRUE(scored.load(kShippedScene, sim::StepMode::Deterministic));
+  testing::QueuedSignalSpy finished(&scored, &SimulationRunner::replayFinished);
+  scored.replay(consumed);
+  ASSERT_TRUE(finished.count() > 0 || finished.wait(60000));
+  EXPECT_EQ(scored.stateHash(), shown);
+  EXPECT_EQ(scored.pierces().size(), live.pierces().size());
+}
+
 TEST(SimulationRunner, DestroyedWhileRunningOrReplayingStopsCleanly) {
   {
     auto runner = std::make_unique<SimulationRunner>();

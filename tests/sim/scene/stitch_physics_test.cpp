@@ -130,7 +130,7 @@ TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledTearsTheWall) {
   ASSERT_EQ(scene.sutureState()->pierces.size(), 4u);
   const Points& s = scene.sutureState()->x;
   const Vec3 tail = s.col(s.cols() - 1);
-  const Vec3 needle = s.col(1);
+  Vec3 needle = s.col(1);
   const Vec3 away = (needle - Vec3(needle.x(), 0.0, 0.0)).normalized();  // out from the axis
   InputFrame f = rec.frames.back();
   double t = f.time;
@@ -143,17 +143,19 @@ TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledTearsTheWall) {
     ASSERT_TRUE(scene.sutureState()->x.allFinite());
   };
   step(needle, 0.0, 0.0);
-  step(needle, 1.0, 1.0);
+  step(Vec3(scene.sutureState()->x.col(1)), 1.0, 1.0);
   ASSERT_TRUE(scene.forceps(Hand::Left)->holdsSuture());
   ASSERT_TRUE(scene.forceps(Hand::Right)->holdsSuture());
+  needle = scene.sutureState()->x.col(1);
   for (int k = 1; k <= 200 && physicsEvents(scene, SceneEventKind::TissueTear) == 0; ++k)
     step(needle + 0.02 * k * away, 1.0, 1.0);
   EXPECT_GT(physicsEvents(scene, SceneEventKind::TissueTear), 0);
   EXPECT_LE(physicsLargestStretch(scene), scene.def().limits.tear);
 }
 
-// The right forceps takes the top of end 0's cut edge and pushes it 1 mm along the axis, twice
-// the gap: the lip meets end 1's cut face and pushes it on; no node ends up inside the other end.
+// The right forceps takes the top of end 0's cut edge and pushes it 0.6 mm along the axis,
+// across the 0.5 mm gap: the lip meets end 1's cut face and pushes it on; no node ends up
+// inside the other end.
 TEST(StitchPhysics, TwoEndsPushedIntoEachOtherStayApart) {
   Scene scene(physicsScene());
   const SceneVessel& end0 = scene.def().vessels.front();
@@ -164,13 +166,13 @@ TEST(StitchPhysics, TwoEndsPushedIntoEachOtherStayApart) {
   for (int k = 0; k < 120; ++k) {
     f.time = 0.01 * k;
     const double along = std::clamp((k - 2) / 100.0, 0.0, 1.0);
-    f = physicsHand(f, Hand::Right, Instrument::Forceps, start + along * end0.def.direction, kFromAbove,
+    f = physicsHand(f, Hand::Right, Instrument::Forceps, start + 0.6 * along * end0.def.direction, kFromAbove,
                     k == 0 ? 0.0 : 1.0);
     const StepReport r = scene.step(f);
     contacts = std::max(contacts, r.contacts);
     ASSERT_TRUE(scene.tissueState().x.allFinite());
-    EXPECT_EQ(collide::interpenetration(scene.tissue(), scene.tissueState().x, scene.def().vessels).count, 0)
-        << "step " << k;
+    const auto pen = collide::interpenetration(scene.tissue(), scene.tissueState().x, scene.def().vessels);
+    EXPECT_EQ(pen.count, 0) << "step " << k;
   }
   ASSERT_FALSE(scene.forceps(Hand::Right)->heldNodes().empty());
   EXPECT_GT(contacts, 0);
@@ -180,22 +182,32 @@ TEST(StitchPhysics, TwoEndsPushedIntoEachOtherStayApart) {
   double pushed = 0.0;
   for (int i = end1.firstNode; i < end1.firstNode + 2 * ring; ++i)
     pushed = std::max(pushed, (scene.tissueState().x.col(i) - scene.tissue().restPositions().col(i)).norm());
-  EXPECT_GT(pushed, 0.1);
+  EXPECT_GT(pushed, 0.05);
 }
 
-// Open jaws pressed 0.1 mm into the top of the wall, away from the cut: the wall dents under
-// them (nodes pushed down, none left inside a jaw), and springs back once they lift.
+// Open jaws pressed 0.1 mm into the top of the wall, away from the cut, opening along the
+// vessel so that both tips come down on it: the wall dents under them (nodes pushed down,
+// none left inside a jaw), and springs back once they lift.
 TEST(StitchPhysics, JawsPressedIntoTheWallDentIt) {
   Scene scene(physicsScene());
   const SceneVessel& end0 = scene.def().vessels.front();
   const Vec3 mid = end0.def.origin + 0.6 * end0.def.length * end0.def.direction;
   const Vec3 top = mid + Vec3(0, 0, end0.def.radius);
   const std::array<double, 2> radii = tools::jawRadii(*scene.def().forceps[static_cast<std::size_t>(Hand::Right)]);
+  Eigen::Matrix3d jaws;
+  jaws.col(0) = Vec3::UnitZ();  // tips → hinge: up
+  jaws.col(1) = Vec3::UnitX();  // opening: along the vessel
+  jaws.col(2) = Vec3::UnitY();
+  const Eigen::Quaterniond alongTheVessel(jaws);
+  // open, the tips stand above the tool's origin (the jaws turn about the hinge)
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = jaws;
+  const double lift = tools::jawTips(*scene.def().forceps[static_cast<std::size_t>(Hand::Right)], pose, 0.0)[0].z();
   InputFrame f;
   int k = 0;
   auto press = [&](double depth) {
     f.time = 0.01 * k++;
-    f = physicsHand(f, Hand::Right, Instrument::Forceps, top + Vec3(0, 0, radii[0] - depth), kFromAbove, 0.0);
+    f = physicsHand(f, Hand::Right, Instrument::Forceps, top + Vec3(0, 0, radii[0] - lift - depth), alongTheVessel, 0.0);
     return scene.step(f);
   };
   press(-0.2);
