@@ -38,8 +38,8 @@ nlohmann::json networkJson(const sim::SpringScene& scene) {
   nlohmann::json links = nlohmann::json::array();
   for (const sim::Link& l : m.links()) {
     nlohmann::json j = {{"a", l.a}, {"b", l.b}, {"rest", l.rest}, {"k", l.k}, {"alive", l.alive}};
-    if (l.law == sim::StiffnessLaw::Stiffening) {
-      j["law"] = "stiffening";
+    if (l.law != sim::StiffnessLaw::Constant) {
+      j["law"] = l.law == sim::StiffnessLaw::Stiffening ? "stiffening" : "exponential";
       j["gain"] = l.gain;
     }
     links.push_back(std::move(j));

@@ -103,6 +103,24 @@ TEST(ExportCommand, MixedSceneObjectsAndCounts) {
   EXPECT_TRUE(summary.out.contains(QString::number(links)));
 }
 
+// a vessel of the wall material (as the shipped scenes declare it) keeps its law and exponent
+// in the export
+TEST(ExportCommand, TheWallMaterialsLawIsExported) {
+  QTemporaryDir dir;
+  const QString scene = dir.filePath(QStringLiteral("vessel.json"));
+  QFile file(scene);
+  ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+  file.write(R"({"objects": [{"type": "vessel", "rings": 3, "nodes_per_ring": 8,
+      "material": {"youngs_modulus": 3.0e5, "fung_exponent": 6, "density": 1.06e-3}}]})");
+  file.close();
+  const QJsonObject net = exportScene({QStringLiteral("--scene"), scene}, dir.filePath(QStringLiteral("a.json")));
+  const QJsonArray links = net.value(QStringLiteral("links")).toArray();
+  ASSERT_FALSE(links.isEmpty());
+  const QJsonObject link = links.at(0).toObject();
+  EXPECT_EQ(link.value(QStringLiteral("law")).toString(), QStringLiteral("exponential"));
+  EXPECT_GT(link.value(QStringLiteral("gain")).toDouble(), 0.0);
+}
+
 TEST(ExportCommand, Errors) {
   const CliRun bad = runCli({QStringLiteral("export"), QStringLiteral("--scene"),
                              QStringLiteral(MICROSIM_TEST_DATA_DIR "/scenes/malformed.json")});
