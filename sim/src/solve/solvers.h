@@ -22,15 +22,18 @@
 //           (Baraff–Witkin): (M + hC + h²K) Δv = h (f + m g − C v) − h² K v, K the clamped
 //           stiffness matrix, solved by block-Jacobi preconditioned CG; then v += Δv,
 //           x += h v. The peer every engine ships (SOFA's EulerImplicit + CG).
-// newton    one Newton step towards equilibrium f(x) + m g = 0: K d = f with K the clamped
-//           Hessian (PSD-projected per spring, see spring_kernels.h), solved by PCG to an
-//           adaptive relative tolerance (inexact Newton, η = clamp(residual, 1e-4, 1e-2)),
-//           then a backtracking line search on the total energy (Armijo). The
-//           preconditioner is block Jacobi on small regions and smoothed-aggregation
-//           multigrid (multigrid.h) on regions of 2000 nodes or more, its hierarchy kept
-//           across iterations and steps until CG slows down. With
-//           SolverParams::activeRegion, the unknowns are only the free nodes the pull
-//           reaches (newton_solver.cpp).
+// newton    one Newton step towards equilibrium f(x) + m g + Σ point springs = 0: K d = f,
+//           then a backtracking line search on the total energy (Armijo). On regions under
+//           2000 nodes K is the true Hessian (links and the controls' point springs), solved
+//           by CG preconditioned with the kept LDLᵀ factors of an earlier Hessian while that
+//           takes at most 12 iterations, else factorised anew (sparse LDLᵀ); where the true
+//           Hessian is indefinite (compressed links) that iteration takes its PSD projection
+//           (per spring, see spring_kernels.h). On regions of 2000 nodes or more K is the
+//           projection, solved by CG to an adaptive relative tolerance (inexact Newton,
+//           η = clamp(residual, 1e-4, 1e-2)) with smoothed-aggregation multigrid
+//           (multigrid.h), its hierarchy kept across iterations and steps until CG slows
+//           down. With SolverParams::activeRegion, the unknowns are only the free nodes the
+//           pull reaches (newton_solver.cpp). Honours point springs (point_spring.h).
 // reference newton on the whole mesh until the relative residual is ≤ 1e-10 (or the
 //           budget's own tolerance when smaller), whatever iteration budget it is given.
 
