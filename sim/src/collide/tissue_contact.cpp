@@ -98,26 +98,23 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   return {best, bestSigned};
 }
 
-std::vector<TissueContactPair> TissueContact::near(const Points& x) const {
+std::vector<TissueContactPair> TissueContact::pairsCloserThan(const Points& x, double signedDistance) const {
   std::vector<TissueContactPair> pairs;
   if (tissue_.triangles().empty()) return pairs;
   buildGrid(x);
   for (int i : surfaceNodes_) {
     const auto [face, distance] = closestFace(x, i, params_.reach);
-    if (face >= 0) pairs.push_back({i, face});
+    if (face >= 0 && distance < signedDistance) pairs.push_back({i, face});
   }
   return pairs;
 }
 
+std::vector<TissueContactPair> TissueContact::near(const Points& x) const {
+  return pairsCloserThan(x, std::numeric_limits<double>::infinity());
+}
+
 std::vector<TissueContactPair> TissueContact::violations(const Points& x) const {
-  std::vector<TissueContactPair> pairs;
-  if (tissue_.triangles().empty()) return pairs;
-  buildGrid(x);
-  for (int i : surfaceNodes_) {
-    const auto [face, distance] = closestFace(x, i, params_.reach);
-    if (face >= 0 && distance < 0.5 * params_.thickness) pairs.push_back({i, face});
-  }
-  return pairs;
+  return pairsCloserThan(x, 0.5 * params_.thickness);
 }
 
 PointSpring TissueContact::spring(const TissueContactPair& pair, const Points& x) const {

@@ -186,6 +186,16 @@ TEST(TissueLimits, TheShippedStitchLeavesNoLinkPastTheTearStrain) {
   RecordProperty("over_stretches", std::to_string(eventsOf(scene, SceneEventKind::TissueOverStretch).size()));
 }
 
+TEST(TissueLimits, BadContactSettingsAreRejectedByField) {
+  for (const char* bad : {R"({"stiffness": -1})", R"({"thickness": 0})", R"({"tissue": 1})", R"({"reach": "far"})"}) {
+    SCOPED_TRACE(bad);
+    SceneDefLoad load = parseSceneDef(std::string(R"({"objects": [{"type": "lattice", "size": [2, 2, 2]}],
+      "collision": )") + bad + "}");
+    ASSERT_TRUE(std::holds_alternative<SceneError>(load));
+    EXPECT_EQ(std::get<SceneError>(load).field.rfind("collision.", 0), 0u) << std::get<SceneError>(load).field;
+  }
+}
+
 TEST(TissueLimits, BadLimitsAreRejectedByField) {
   SceneDefLoad load = parseSceneDef(R"({"objects": [{"type": "lattice", "size": [2, 2, 2]}],
     "tissue": {"overstretch": -1}})");

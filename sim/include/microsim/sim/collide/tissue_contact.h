@@ -74,6 +74,9 @@ class TissueContact {
  private:
   /// The closest eligible face to node i within `radius` (−1 for none), its signed distance.
   std::pair<int, double> closestFace(const Points& x, int node, double radius) const;
+  /// The pairs (node, its closest eligible face within reach) whose signed distance is below
+  /// `signedDistance` (mm).
+  std::vector<TissueContactPair> pairsCloserThan(const Points& x, double signedDistance) const;
   void buildGrid(const Points& x) const;
   std::int64_t cellKey(int ix, int iy, int iz) const;
 
