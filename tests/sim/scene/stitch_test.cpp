@@ -37,7 +37,10 @@ std::uint64_t replay(Scene& scene, const Recording& rec) {
 }
 
 TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
-  const SceneDef def = anastomosis();
+  // the geometry of the pass, with the tip piercing where it meets a wall (the shipped
+  // scene's dent before the puncture is needle_puncture_test.cpp's)
+  SceneDef def = anastomosis();
+  def.needle->punctureForce = 0.0;
   const std::vector<ExpectedPierce> expected = stitchPierces(def);
   ASSERT_EQ(expected.size(), 4u);
   const Recording rec = scriptedStitch(def);
@@ -55,7 +58,7 @@ TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
     EXPECT_EQ(p[k].end, expected[k].end);
     EXPECT_EQ(p[k].surface, surfaces[k]);
     EXPECT_EQ(p[k].wall, VesselWall::Front);
-    EXPECT_LT((p[k].point - expected[k].point).norm(), 0.05);
+    EXPECT_LT((p[k].restPoint - expected[k].point).norm(), 0.05);
     // the holes already made hold the wall to the turning needle, which tilts the faces the
     // exits cross by under a degree from the undeformed geometry the expectation assumes
     EXPECT_NEAR(p[k].angleDeg, expected[k].angleDeg, 1.0);
