@@ -25,7 +25,7 @@ cpack -G DEB --config "$build/CPackConfig.cmake" -B "$out" >"$out.log" 2>&1 || {
   fail "cpack failed"
 }
 debs=("$out"/microsim_*.deb)
-[ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || fail "expected one microsim_*.deb in $out"
+if [ ${#debs[@]} -ne 1 ] || [ ! -f "${debs[0]}" ]; then fail "expected one microsim_*.deb in $out"; fi
 deb="${debs[0]}"
 echo "package-test: built $deb ($(du -h "$deb" | cut -f1))"
 

@@ -7,6 +7,7 @@
 namespace microsim::cli {
 namespace {
 
+using testing::CliRun;
 using testing::manPageSource;
 using testing::optionsMissingFromManPage;
 using testing::roffWord;
