@@ -1065,6 +1065,26 @@
         <source>cannot create %1</source>
         <translation>%1 kann nicht angelegt werden</translation>
     </message>
+    <message>
+        <source>Start as usual, quit once the main window is drawn; exit 1 if it was not, or a lesson or the history could not be read.</source>
+        <translation>Wie gewohnt starten und beenden, sobald das Hauptfenster gezeichnet ist; Exit-Code 1, wenn es nicht gezeichnet wurde oder eine Lektion oder der Verlauf nicht gelesen werden konnte.</translation>
+    </message>
+    <message>
+        <source>the main window was not drawn within %1 s</source>
+        <translation>das Hauptfenster wurde nicht innerhalb von %1 s gezeichnet</translation>
+    </message>
+    <message>
+        <source>no lesson files in %1</source>
+        <translation>keine Lektionsdateien in %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n lesson file(s) in %2 could be read</source>
+        <translation><numerusform>%1 von %n Lektionsdatei in %2 lesbar</numerusform><numerusform>%1 von %n Lektionsdateien in %2 lesbar</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim started: %n lesson(s) from %1, history %2</source>
+        <translation><numerusform>microsim gestartet: %n Lektion aus %1, Verlauf %2</numerusform><numerusform>microsim gestartet: %n Lektionen aus %1, Verlauf %2</numerusform></translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::AttemptDetailView</name>

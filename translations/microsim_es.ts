@@ -1065,6 +1065,26 @@
         <source>cannot create %1</source>
         <translation>no se puede crear %1</translation>
     </message>
+    <message>
+        <source>Start as usual, quit once the main window is drawn; exit 1 if it was not, or a lesson or the history could not be read.</source>
+        <translation>Iniciar como de costumbre y salir en cuanto se dibuje la ventana principal; código de salida 1 si no se dibujó o si no se pudo leer una lección o el historial.</translation>
+    </message>
+    <message>
+        <source>the main window was not drawn within %1 s</source>
+        <translation>la ventana principal no se dibujó en %1 s</translation>
+    </message>
+    <message>
+        <source>no lesson files in %1</source>
+        <translation>no hay archivos de lección en %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n lesson file(s) in %2 could be read</source>
+        <translation><numerusform>se pudieron leer %1 de %n archivo de lección en %2</numerusform><numerusform>se pudieron leer %1 de %n archivos de lección en %2</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim started: %n lesson(s) from %1, history %2</source>
+        <translation><numerusform>microsim iniciado: %n lección de %1, historial %2</numerusform><numerusform>microsim iniciado: %n lecciones de %1, historial %2</numerusform></translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::AttemptDetailView</name>
