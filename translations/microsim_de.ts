@@ -411,10 +411,6 @@
         <translation>beschädigte Aufzeichnung (fehlerhaftes Bild)</translation>
     </message>
     <message>
-        <source>The scene &lt;file&gt; to run.</source>
-        <translation>Die auszuführende Szene &lt;file&gt;.</translation>
-    </message>
-    <message>
         <source>Replay the input frames of the recording &lt;file&gt;.</source>
         <translation>Die Eingabebilder der Aufzeichnung &lt;file&gt; abspielen.</translation>
     </message>
@@ -437,14 +433,6 @@
     <message>
         <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
         <translation>Hash, Ereignisse und Zeiten als JSON in &lt;file&gt; schreiben.</translation>
-    </message>
-    <message>
-        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Aufruf: microsim-cli run --scene DATEI [--input AUFZ | --script stitch] [--record AUFZ] [--frames N] [--json AUS]</translation>
-    </message>
-    <message>
-        <source>--scene FILE is required</source>
-        <translation>--scene DATEI ist erforderlich</translation>
     </message>
     <message>
         <source>--input and --script exclude each other</source>
@@ -1009,6 +997,26 @@
     <message>
         <source>could not connect to %1:%2: %3</source>
         <translation>keine Verbindung zu %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the recording was made on the scene %1, which is not there, not beside the recording and not among the shipped scenes (looked at: %2); give --scene FILE</source>
+        <translation>die Aufzeichnung wurde mit der Szene %1 gemacht, die weder dort noch neben der Aufzeichnung noch unter den mitgelieferten Szenen liegt (gesucht in: %2); --scene DATEI angeben</translation>
+    </message>
+    <message>
+        <source>%1 has changed since the recording was made on it (%2): the replay may differ from the attempt</source>
+        <translation>%1 wurde geändert, seit die Aufzeichnung damit gemacht wurde (%2): die Wiedergabe kann vom Versuch abweichen</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run (default with --input: the one the recording names).</source>
+        <translation>Die auszuführende Szene &lt;file&gt; (Vorgabe mit --input: die, die die Aufzeichnung nennt).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Aufruf: microsim-cli run (--scene DATEI [--input AUFZ | --script stitch] | --input AUFZ) [--record AUFZ] [--frames N] [--json AUS]</translation>
+    </message>
+    <message>
+        <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
+        <translation>--scene DATEI angeben, oder --input AUFZ, um sie auf der Szene wiederzugeben, mit der sie aufgezeichnet wurde</translation>
     </message>
 </context>
 <context>

@@ -411,10 +411,6 @@
         <translation>grabación dañada (fotograma mal formado)</translation>
     </message>
     <message>
-        <source>The scene &lt;file&gt; to run.</source>
-        <translation>La escena &lt;file&gt; que se ejecutará.</translation>
-    </message>
-    <message>
         <source>Replay the input frames of the recording &lt;file&gt;.</source>
         <translation>Reproducir los fotogramas de entrada de la grabación &lt;file&gt;.</translation>
     </message>
@@ -437,14 +433,6 @@
     <message>
         <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
         <translation>Escribir el hash, los eventos y los tiempos como JSON en &lt;file&gt;.</translation>
-    </message>
-    <message>
-        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Uso: microsim-cli run --scene ARCHIVO [--input GRAB | --script stitch] [--record GRAB] [--frames N] [--json SALIDA]</translation>
-    </message>
-    <message>
-        <source>--scene FILE is required</source>
-        <translation>--scene ARCHIVO es obligatorio</translation>
     </message>
     <message>
         <source>--input and --script exclude each other</source>
@@ -1009,6 +997,26 @@
     <message>
         <source>could not connect to %1:%2: %3</source>
         <translation>no se pudo conectar a %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the recording was made on the scene %1, which is not there, not beside the recording and not among the shipped scenes (looked at: %2); give --scene FILE</source>
+        <translation>la grabación se hizo con la escena %1, que no está ahí, ni junto a la grabación, ni entre las escenas incluidas (buscada en: %2); indique --scene ARCHIVO</translation>
+    </message>
+    <message>
+        <source>%1 has changed since the recording was made on it (%2): the replay may differ from the attempt</source>
+        <translation>%1 ha cambiado desde que se hizo la grabación con ella (%2): la reproducción puede diferir del intento</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run (default with --input: the one the recording names).</source>
+        <translation>La escena &lt;file&gt; que se ejecutará (por defecto con --input: la que indica la grabación).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Uso: microsim-cli run (--scene ARCHIVO [--input GRAB | --script stitch] | --input GRAB) [--record GRAB] [--frames N] [--json SALIDA]</translation>
+    </message>
+    <message>
+        <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
+        <translation>indique --scene ARCHIVO, o --input GRAB para reproducirla en la escena con la que se grabó</translation>
     </message>
 </context>
 <context>

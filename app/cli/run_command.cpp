@@ -1,7 +1,8 @@
 // `microsim-cli run --scene S [--input REC | --script stitch] [--record REC] [--frames N]
 // [--realtime] [--json OUT]`: builds the scene, feeds it one InputFrame per fixed step (from
 // a recording, from the scripted stitch, or idle hands), and prints the final state hash,
-// the events and the per-stage step times (median, p99, max).
+// the events and the per-stage step times (median, p99, max). With --input and no --scene,
+// the scene is the one the recording was made on.
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/output_file.h"
@@ -9,6 +10,7 @@
 #include "cli/recording_text.h"
 #include "cli/run_report.h"
 #include "cli/spring_scene_input.h"
+#include "microsim/sim/scene/recorded_scene.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/stitch_script.h"
@@ -23,7 +25,9 @@ namespace microsim::cli {
 namespace {
 
 struct RunOptions {
-  QCommandLineOption scene{QStringLiteral("scene"), Cli::tr("The scene <file> to run."), QStringLiteral("file")};
+  QCommandLineOption scene{QStringLiteral("scene"),
+                           Cli::tr("The scene <file> to run (default with --input: the one the recording names)."),
+                           QStringLiteral("file")};
   QCommandLineOption input{QStringLiteral("input"), Cli::tr("Replay the input frames of the recording <file>."),
                            QStringLiteral("file")};
   QCommandLineOption script{QStringLiteral("script"),
@@ -39,7 +43,7 @@ struct RunOptions {
                           QStringLiteral("file")};
 
   QString usage() const {
-    return Cli::tr("Usage: microsim-cli run --scene FILE [--input REC | --script stitch] "
+    return Cli::tr("Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) "
                    "[--record REC] [--frames N] [--json OUT]");
   }
   void declare(CommandLine& line) const { line.addOptions({scene, input, script, record, frames, realtime, json}); }
@@ -47,7 +51,7 @@ struct RunOptions {
 
 // what the command line asks for, checked
 struct RunRequest {
-  QString scene;
+  QString scene;        ///< empty: the one the --input recording names
   QString input;       ///< a recording to replay; empty: none
   bool script = false;  ///< the scripted stitch
   QString record;      ///< where to record the frames fed; empty: nowhere
@@ -57,8 +61,8 @@ struct RunRequest {
 };
 
 std::optional<RunRequest> readRunRequest(const CommandLine& line, const RunOptions& o) {
-  if (!line.isSet(o.scene)) {
-    line.usageError(Cli::tr("--scene FILE is required"));
+  if (!line.isSet(o.scene) && !line.isSet(o.input)) {
+    line.usageError(Cli::tr("give --scene FILE, or --input REC to replay it on the scene it was recorded on"));
     return std::nullopt;
   }
   if (line.isSet(o.input) && line.isSet(o.script)) {
@@ -89,25 +93,35 @@ std::optional<RunRequest> readRunRequest(const CommandLine& line, const RunOptio
 
 // the scene and the frames it is fed
 struct RunInput {
+  QString sceneFile;
   sim::SceneDef scene;
   std::vector<sim::InputFrame> feed;
 };
 
-std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& request) {
-  sim::SceneDefLoad load = sim::loadSceneDef(request.scene.toStdString());
+// nullopt after printing why: `exitCode` is kExitFailure, or kExitUsage when only --scene can name the scene
+std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& request, int& exitCode) {
+  exitCode = kExitFailure;
+  // the recording first: it names the scene it was made on
+  std::optional<RecordingInput> replay;
+  if (!request.input.isEmpty()) {
+    replay = readRecordingInput(line, request.input, RecordingUse::Replay);
+    if (!replay) return std::nullopt;
+  }
+  const std::optional<QString> sceneFile =
+      request.scene.isEmpty() ? sceneOfRecording(line, *replay, exitCode) : request.scene;
+  if (!sceneFile) return std::nullopt;
+  sim::SceneDefLoad load = sim::loadSceneDef(sceneFile->toStdString());
   if (auto* e = std::get_if<sim::SceneError>(&load)) {
-    line.failure(describeSceneError(*e));
+    exitCode = line.failure(describeSceneError(*e));
     return std::nullopt;
   }
-  RunInput run{std::get<sim::SceneDef>(std::move(load)), {}};
-  if (!request.input.isEmpty()) {
-    std::optional<RecordingInput> replay = readRecordingInput(line, request.input, RecordingUse::Replay);
-    if (!replay) return std::nullopt;
+  RunInput run{*sceneFile, std::get<sim::SceneDef>(std::move(load)), {}};
+  if (replay) {
     run.feed = std::move(replay->recording.frames);
   } else if (request.script) {
     run.feed = sim::scriptedStitch(run.scene).frames;
     if (run.feed.empty()) {
-      line.failure(Cli::tr("the stitch script needs a severed vessel, a curved needle and two forceps"));
+      exitCode = line.failure(Cli::tr("the stitch script needs a severed vessel, a curved needle and two forceps"));
       return std::nullopt;
     }
   } else {
@@ -121,13 +135,14 @@ std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& 
   return run;
 }
 
-// --record opens before the first step, so that a bad path fails at once
-bool openRecord(const CommandLine& line, const RunRequest& request, sim::RecordingWriter& writer) {
+// --record opens before the first step, so that a bad path fails at once; the recording
+// names the scene it is made on, and its metadata the script that made it
+bool openRecord(const CommandLine& line, const RunRequest& request, const QString& sceneFile,
+                sim::RecordingWriter& writer) {
   if (request.record.isEmpty()) return true;
-  nlohmann::json meta;
-  meta["scene"] = request.scene.toStdString();
-  if (request.script) meta["script"] = "stitch";
-  const sim::RecordingStatus s = writer.open(request.record.toStdString(), meta.dump());
+  const std::string meta = request.script ? nlohmann::json{{"script", "stitch"}}.dump() : std::string();
+  const sim::RecordingStatus s =
+      writer.open(request.record.toStdString(), sim::recordScene(sceneFile.toStdString()), meta);
   if (!s.ok()) line.failure(request.record + QStringLiteral(": ") + recordingErrorText(s.error));
   return s.ok();
 }
@@ -153,10 +168,11 @@ int runScene(const CommandLine& line, const RunOptions& options) {
   if (!request) return kExitUsage;
 
   // load
-  std::optional<RunInput> input = loadRunInput(line, *request);
-  if (!input) return kExitFailure;
+  int loadExit = kExitFailure;
+  std::optional<RunInput> input = loadRunInput(line, *request, loadExit);
+  if (!input) return loadExit;
   sim::RecordingWriter writer;
-  if (!openRecord(line, *request, writer)) return kExitFailure;
+  if (!openRecord(line, *request, input->sceneFile, writer)) return kExitFailure;
 
   // run
   sim::Scene scene(std::move(input->scene),
@@ -165,9 +181,10 @@ int runScene(const CommandLine& line, const RunOptions& options) {
   if (!stepEveryFrame(line, *request, input->feed, scene, writer, times)) return kExitFailure;
 
   // report
-  printRunReport(line.io().out, scene, request->scene, times);
+  printRunReport(line.io().out, scene, input->sceneFile, times);
   if (request->json.isEmpty()) return kExitOk;
-  return writeCommandOutput(line, request->json, QByteArray::fromStdString(runReportJson(scene, request->scene, times)));
+  return writeCommandOutput(line, request->json,
+                            QByteArray::fromStdString(runReportJson(scene, input->sceneFile, times)));
 }
 
 }  // namespace

@@ -12,9 +12,7 @@
 #include "microsim/assessment/scoring/attempt.h"
 #include "microsim/assessment/storage/history_database.h"
 
-#include <QDir>
 #include <QFile>
-#include <QFileInfo>
 
 #include <optional>
 #include <string>
@@ -113,16 +111,6 @@ QString rubricErrorText(const as::RubricError& e) {
   return text;
 }
 
-// the scene the recording's metadata names, as given or beside the recording
-std::optional<QString> sceneFromMetadata(const std::string& metadata, const QString& recordingPath) {
-  const nlohmann::json meta = nlohmann::json::parse(metadata, nullptr, false);
-  if (!meta.is_object() || !meta.contains("scene") || !meta["scene"].is_string()) return std::nullopt;
-  const QString named = QString::fromStdString(meta["scene"].get<std::string>());
-  if (QFileInfo::exists(named)) return named;
-  const QString beside = QFileInfo(recordingPath).dir().filePath(named);
-  return QFileInfo::exists(beside) ? beside : named;
-}
-
 // what is scored: the rubric, the recording, and the scene it ran on
 struct ScoreInput {
   as::Rubric rubric;
@@ -130,7 +118,7 @@ struct ScoreInput {
   QString scene;
 };
 
-// nullopt after printing why: `exitCode` is kExitFailure, or kExitUsage when only --scene can say the scene
+// nullopt after printing why: `exitCode` is kExitFailure, or kExitUsage when only --scene can name the scene
 std::optional<ScoreInput> loadScoreInput(const CommandLine& line, const ScoreRequest& request, int& exitCode) {
   exitCode = kExitFailure;
   auto rubric = as::loadRubric(request.rubric.toStdString());
@@ -140,12 +128,9 @@ std::optional<ScoreInput> loadScoreInput(const CommandLine& line, const ScoreReq
   }
   std::optional<RecordingInput> replay = readRecordingInput(line, request.recording, RecordingUse::Score);
   if (!replay) return std::nullopt;
-  std::optional<QString> scene = request.scene;
-  if (request.scene.isEmpty()) scene = sceneFromMetadata(replay->recording.metadata, request.recording);
-  if (!scene) {
-    exitCode = line.usageError(Cli::tr("the recording names no scene: give --scene FILE"));
-    return std::nullopt;
-  }
+  const std::optional<QString> scene =
+      request.scene.isEmpty() ? sceneOfRecording(line, *replay, exitCode) : request.scene;
+  if (!scene) return std::nullopt;
   return ScoreInput{std::get<as::Rubric>(std::move(rubric)), std::move(*replay), *scene};
 }
 
