@@ -11,7 +11,9 @@
 #include "cli/commands.h"
 #include "cli/output_file.h"
 
+#include "microsim/assessment/storage/attempts_csv.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
 
 #include <QCommandLineParser>
 #include <QFile>
@@ -70,7 +72,7 @@ QString describe(HistoryError error) {
       return Cli::tr("that name is taken");
     case HistoryError::InvalidInput:
       return Cli::tr("empty name, or a password shorter than %1 characters")
-          .arg(HistoryDatabase::kMinPasswordLength);
+          .arg(assessment::PeopleStore::kMinPasswordLength);
     case HistoryError::WrongPassword:
       return Cli::tr("unknown instructor or wrong password");
     case HistoryError::Unsupported:
@@ -160,9 +162,10 @@ int runDb(const QStringList& args, Streams& io) {
     io.err << '\n';
     return kExitFailure;
   }
-  const auto failed = [&] {
-    io.err << Cli::tr("microsim-cli db %1: %2").arg(action, describe(history.lastError().error));
-    if (!history.lastError().driverMessage.isEmpty()) io.err << " (" << history.lastError().driverMessage << ')';
+  assessment::PeopleStore people(history);
+  const auto failed = [&](const assessment::HistoryStatus& why) {
+    io.err << Cli::tr("microsim-cli db %1: %2").arg(action, describe(why.error));
+    if (!why.driverMessage.isEmpty()) io.err << " (" << why.driverMessage << ')';
     io.err << '\n';
     return kExitFailure;
   };
@@ -178,21 +181,22 @@ int runDb(const QStringList& args, Streams& io) {
              << '\n';
       return kExitFailure;
     }
-    if (!history.backup(argument)) return failed();
+    if (!history.backup(argument)) return failed(history.lastError());
     io.out << Cli::tr("backed up %1 to %2").arg(history.path(), argument) << '\n';
   } else if (action == QLatin1String("restore")) {
-    if (!history.restore(argument)) return failed();
+    if (!history.restore(argument)) return failed(history.lastError());
     io.out << Cli::tr("restored %1 from %2 (schema version %3)").arg(history.path(), argument).arg(history.schemaVersion())
            << '\n';
   } else if (action == QLatin1String("export-csv")) {
-    const auto id = history.verifyInstructor(parser.value(instructor), passwordFromStdin());
-    if (!id) return failed();
+    const auto id = people.verifyInstructor(parser.value(instructor), passwordFromStdin());
+    if (!id) return failed(people.lastError());
     QFile out(argument);
     if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
       io.err << Cli::tr("microsim-cli db: cannot write %1").arg(argument) << '\n';
       return kExitFailure;
     }
-    if (!history.exportCsv({*id, Role::Instructor}, out)) return failed();
+    if (const auto exported = assessment::exportAttemptsCsv(history, {*id, Role::Instructor}, out); !exported.ok())
+      return failed(exported);
     QString why;
     if (!closeOutputFile(out, why)) {
       io.err << Cli::tr("microsim-cli db: cannot write %1").arg(argument) << " (" << why << ")\n";
@@ -200,12 +204,12 @@ int runDb(const QStringList& args, Streams& io) {
     }
     io.out << Cli::tr("wrote %1").arg(argument) << '\n';
   } else if (action == QLatin1String("list-trainees")) {
-    const QList<assessment::Trainee> people = history.trainees();
-    if (!history.lastError().ok()) return failed();
+    const QList<assessment::Trainee> everyone = people.trainees();
+    if (!people.lastError().ok()) return failed(people.lastError());
     io.out << Cli::tr("id").leftJustified(8) << Cli::tr("role").leftJustified(12) << Cli::tr("group").leftJustified(16)
            << Cli::tr("name") << '\n';
     QJsonArray rows;
-    for (const assessment::Trainee& t : people) {
+    for (const assessment::Trainee& t : everyone) {
       io.out << QString::number(t.id).leftJustified(8) << roleName(t.role).leftJustified(12)
              << t.group.leftJustified(16) << t.name << '\n';
       rows.append(QJsonObject{{QStringLiteral("id"), t.id},
@@ -222,12 +226,12 @@ int runDb(const QStringList& args, Streams& io) {
       }
     }
   } else if (action == QLatin1String("add-trainee")) {
-    const auto id = history.addTrainee(argument, parser.value(group));
-    if (!id) return failed();
+    const auto id = people.addTrainee(argument, parser.value(group));
+    if (!id) return failed(people.lastError());
     io.out << Cli::tr("added trainee %1 (id %2)").arg(argument).arg(*id) << '\n';
   } else {
-    const auto id = history.addInstructor(argument, passwordFromStdin());
-    if (!id) return failed();
+    const auto id = people.addInstructor(argument, passwordFromStdin());
+    if (!id) return failed(people.lastError());
     io.out << Cli::tr("added instructor %1 (id %2)").arg(argument).arg(*id) << '\n';
   }
   return kExitOk;

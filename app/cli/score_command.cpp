@@ -10,7 +10,10 @@
 #include "microsim/assessment/scoring/attempt.h"
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 #include "microsim/sim/scene/recording.h"
 
 #include <QCommandLineParser>
@@ -185,15 +188,23 @@ std::optional<qint64> store(const QString& location, const QString& traineeName,
     io.err << '\n';
     return std::nullopt;
   }
+  as::PeopleStore people(db);
   std::optional<qint64> trainee;
-  for (const as::Trainee& t : db.trainees())
+  for (const as::Trainee& t : people.trainees())
     if (t.name == traineeName && t.role == as::Role::Trainee) trainee = t.id;
-  if (!trainee) trainee = db.addTrainee(traineeName);
+  if (!trainee) trainee = people.addTrainee(traineeName);
+  if (!trainee) {
+    io.err << prefix << Cli::tr("cannot store the attempt: %1").arg(historyErrorText(people.lastError())) << '\n';
+    return std::nullopt;
+  }
   QFile file(recordingPath);
   const QByteArray bytes = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-  const std::optional<qint64> attempt = trainee ? db.beginAttempt(*trainee, lesson, mode) : std::nullopt;
-  if (!attempt || !db.finishAttempt(*attempt, score, bytes)) {
-    io.err << prefix << Cli::tr("cannot store the attempt: %1").arg(historyErrorText(db.lastError())) << '\n';
+  as::AttemptStore attempts(db);
+  as::ScoreStore scores(db);
+  const std::optional<qint64> attempt = attempts.begin(*trainee, lesson, mode);
+  if (!attempt || !scores.finish(*attempt, score, bytes)) {
+    const as::HistoryStatus why = attempt ? scores.lastError() : attempts.lastError();
+    io.err << prefix << Cli::tr("cannot store the attempt: %1").arg(historyErrorText(why)) << '\n';
     return std::nullopt;
   }
   return attempt;

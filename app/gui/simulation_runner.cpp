@@ -1,5 +1,7 @@
 #include "gui/simulation_runner.h"
 
+#include <QJsonDocument>
+
 #include <pthread.h>
 
 #include <algorithm>
@@ -36,6 +38,23 @@ SimulationRunner::SimulationRunner(QObject* parent) : QObject(parent) {
 SimulationRunner::~SimulationRunner() { stop(); }
 
 bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::SceneError* error) {
+  reset();
+  auto opened = sim::openScene(scenePath.toStdString(), mode);
+  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
+    if (error) *error = *e;
+    return false;
+  }
+  adopt(std::move(std::get<std::unique_ptr<sim::Scene>>(opened)), scenePath);
+  return true;
+}
+
+void SimulationRunner::load(const sim::SceneDef& def, sim::StepMode mode) {
+  reset();
+  adopt(std::make_unique<sim::Scene>(def, mode), QString::fromStdString(def.file));
+}
+
+// stops any run and forgets the scene and everything it produced
+void SimulationRunner::reset() {
   stop();
   scene_.reset();
   {
@@ -55,17 +74,13 @@ bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::S
   }
   steps_ = 0;
   hash_ = 0;
+}
 
-  auto opened = sim::openScene(scenePath.toStdString(), mode);
-  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
-    if (error) *error = *e;
-    return false;
-  }
-  scene_ = std::move(std::get<std::unique_ptr<sim::Scene>>(opened));
+void SimulationRunner::adopt(std::unique_ptr<sim::Scene> scene, const QString& scenePath) {
+  scene_ = std::move(scene);
   scenePath_ = scenePath;
   hash_ = scene_->hash();
   publish();
-  return true;
 }
 
 void SimulationRunner::start() {
@@ -107,7 +122,10 @@ void SimulationRunner::stop() {
   finishRecording();
 }
 
-void SimulationRunner::setRecordingFile(const QString& path) { recordingPath_ = path; }
+void SimulationRunner::setRecordingFile(const QString& path, const QJsonObject& metadata) {
+  recordingPath_ = path;
+  recordingMetadata_ = metadata;
+}
 
 sim::RecordingStatus SimulationRunner::recordingStatus() const {
   const std::lock_guard lock(resultsMutex_);
@@ -118,9 +136,10 @@ void SimulationRunner::openRecording() {
   const std::lock_guard lock(resultsMutex_);
   recordingStatus_ = {};
   if (recordingPath_.isEmpty() || writer_.isOpen()) return;
-  // the metadata names the scene, as `microsim-cli run` expects no more of it
-  const std::string meta = R"({"scene": ")" + scenePath_.toStdString() + R"("})";
-  recordingStatus_ = writer_.open(recordingPath_.toStdString(), meta);
+  // the metadata names the scene, as `microsim-cli run` and `score` read it
+  QJsonObject meta = recordingMetadata_;
+  meta.insert(QStringLiteral("scene"), scenePath_);
+  recordingStatus_ = writer_.open(recordingPath_.toStdString(), QJsonDocument(meta).toJson(QJsonDocument::Compact).toStdString());
 }
 
 void SimulationRunner::finishRecording() {

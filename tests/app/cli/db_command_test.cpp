@@ -2,6 +2,7 @@
 // PostgreSQL server of scripts/postgres-for-tests.sh when MICROSIM_TEST_PG_URL is set).
 #include "support/cli_runner.h"
 
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
 
 #include <QCoreApplication>
@@ -15,6 +16,7 @@
 
 namespace {
 
+using microsim::assessment::AttemptStore;
 using microsim::assessment::HistoryDatabase;
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
@@ -69,7 +71,7 @@ TEST(DbCommand, AddListBackupRestoreAndExport) {
   {
     HistoryDatabase h;
     ASSERT_TRUE(h.open(db).ok());
-    ASSERT_TRUE(h.beginAttempt(people[1].toObject()[QStringLiteral("id")].toInteger(), QStringLiteral("01_bite"),
+    ASSERT_TRUE(AttemptStore(h).begin(people[1].toObject()[QStringLiteral("id")].toInteger(), QStringLiteral("01_bite"),
                                microsim::assessment::AttemptMode::Learn));
   }
   const QString csv = dir.filePath(QStringLiteral("attempts.csv"));

@@ -2,7 +2,11 @@
 // disabled case below) begins an attempt, says so on stdout and waits; the test kills it
 // and reopens the history. Finished attempts are intact; the child's is Interrupted.
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include "assessment/storage/history_backend.h"
 
@@ -25,7 +29,7 @@ TEST(HistoryCrashChild, DISABLED_BeginAttemptAndWait) {
   if (location.isEmpty()) GTEST_SKIP() << "started by HistoryCrash only";
   HistoryDatabase db;
   ASSERT_TRUE(db.open(location).ok());
-  const auto id = db.beginAttempt(qEnvironmentVariable("MICROSIM_CHILD_TRAINEE").toLongLong(),
+  const auto id = AttemptStore(db).begin(qEnvironmentVariable("MICROSIM_CHILD_TRAINEE").toLongLong(),
                                   QStringLiteral("03_crash"), AttemptMode::Test);
   ASSERT_TRUE(id.has_value());
   std::printf("ready %lld\n", static_cast<long long>(*id));
@@ -41,14 +45,14 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   {
     HistoryDatabase db;
     openInto(db);
-    trainee = db.addTrainee(QStringLiteral("Carla")).value_or(0);
-    done = db.beginAttempt(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    trainee = PeopleStore(db).addTrainee(QStringLiteral("Carla")).value_or(0);
+    done = AttemptStore(db).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
     AttemptScore score;
     score.score = 77;
     score.rubricId = "r";
     score.rubricVersion = 1;
     score.metrics.push_back({"time", 61.0, "s", 60, 30, 1, 0.9, ""});
-    ASSERT_TRUE(db.finishAttempt(done, score, QByteArray("rec")));
+    ASSERT_TRUE(ScoreStore(db).finish(done, score, QByteArray("rec")));
   }
 
   QProcess child;
@@ -77,14 +81,14 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
     // the server ends the killed client's backend when it sees the socket close, a moment
     // after the kill; reopen until it has (the session test is the backend's absence)
     QDeadlineTimer deadline(20000);
-    while (db.attempts(carla).value(1).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
+    while (AttemptStore(db).list(carla).value(1).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
       QSqlQuery wait(db.connection());
       wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
       db.close();
       openInto(db);
     }
   }
-  const QList<AttemptSummary> all = db.attempts(carla);
+  const QList<AttemptSummary> all = AttemptStore(db).list(carla);
   ASSERT_EQ(all.size(), 2);
   EXPECT_EQ(all[0].id, done);
   EXPECT_EQ(all[0].status, AttemptStatus::Finished);
@@ -94,30 +98,59 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   EXPECT_EQ(all[1].status, AttemptStatus::Interrupted);
   EXPECT_TRUE(all[1].finished.isValid());
   EXPECT_FALSE(all[1].score.has_value());
-  const auto detail = db.attempt(carla, done);
+  const auto detail = readAttemptDetail(db, carla, done);
   ASSERT_TRUE(detail.has_value());
   EXPECT_EQ(detail->recording, QByteArray("rec"));
   ASSERT_EQ(detail->metrics.size(), 1);
   // an interrupted attempt can no longer be finished
-  EXPECT_FALSE(db.finishAttempt(begun, AttemptScore{}, {}));
-  EXPECT_EQ(db.lastError().error, HistoryError::NotInProgress);
+  ScoreStore scores(db);
+  EXPECT_FALSE(scores.finish(begun, AttemptScore{}, {}));
+  EXPECT_EQ(scores.lastError().error, HistoryError::NotInProgress);
 }
 
 TEST_P(HistoryCrash, LiveSessionsAttemptsAreLeftInProgress) {
   HistoryDatabase first;
   openInto(first);
-  const qint64 trainee = first.addTrainee(QStringLiteral("Dev")).value_or(0);
-  const qint64 running = first.beginAttempt(trainee, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
+  const qint64 trainee = PeopleStore(first).addTrainee(QStringLiteral("Dev")).value_or(0);
+  const qint64 running = AttemptStore(first).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
   ASSERT_TRUE(running);
   // a second program (here: connection) opening the same history must not end it
   HistoryDatabase second;
   openInto(second);
-  const QList<AttemptSummary> seen = second.attempts({trainee, Role::Trainee});
+  const QList<AttemptSummary> seen = AttemptStore(second).list({trainee, Role::Trainee});
   ASSERT_EQ(seen.size(), 1);
   EXPECT_EQ(seen[0].status, AttemptStatus::InProgress);
   AttemptScore score;
   score.score = 50;
-  EXPECT_TRUE(first.finishAttempt(running, score, {}));
+  EXPECT_TRUE(ScoreStore(first).finish(running, score, {}));
+}
+
+TEST_P(HistoryCrash, AClosedConnectionsAttemptIsInterruptedAtTheNextOpenInTheSameProcess) {
+  qint64 trainee = 0, left = 0;
+  {
+    HistoryDatabase session;
+    openInto(session);
+    trainee = PeopleStore(session).addTrainee(QStringLiteral("Eli")).value_or(0);
+    left = AttemptStore(session).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    ASSERT_TRUE(left);
+  }  // closed without finishing or abandoning, as a destroyed attempt session leaves it
+  HistoryDatabase next;
+  openInto(next);
+  const Viewer eli{trainee, Role::Trainee};
+  if (GetParam() == Driver::PostgreSQL) {
+    // the server ends the closed connection's backend a moment after the close
+    QDeadlineTimer deadline(20000);
+    while (AttemptStore(next).list(eli).value(0).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
+      QSqlQuery wait(next.connection());
+      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
+      next.close();
+      openInto(next);
+    }
+  }
+  const QList<AttemptSummary> all = AttemptStore(next).list(eli);
+  ASSERT_EQ(all.size(), 1);
+  EXPECT_EQ(all[0].id, left);
+  EXPECT_EQ(all[0].status, AttemptStatus::Interrupted);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, HistoryCrash, ::testing::Values(Driver::SQLite, Driver::PostgreSQL),
