@@ -219,7 +219,9 @@ void ReviewPage::buildGrid() {
         if (cell.proficient) text += QStringLiteral("★");
         item->setText(text);
         item->setBackground(cellColour(cell));
-        item->setToolTip(tr("%n attempt(s), %1 finished", nullptr, cell.attempts).arg(cell.finished));
+        item->setToolTip(tr("%n attempt(s): %1 finished, %2 abandoned", nullptr, cell.attempts)
+                             .arg(cell.finished)
+                             .arg(cell.abandoned));
       }
       grid_->setItem(r, kFixedColumns + c, item);
     }

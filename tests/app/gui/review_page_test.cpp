@@ -5,6 +5,7 @@
 #include "gui/review/replay_player.h"
 #include "gui/review/review_charts.h"
 #include "gui/review/review_page.h"
+#include "gui/review/review_text.h"
 #include "gui/review/trainee_history_view.h"
 #include "gui/simulation_runner.h"
 #include "lesson/lesson.h"
@@ -225,6 +226,44 @@ TEST_F(ReviewPageTest, GridShowsBestScoreAttemptsAndGroupsFilter) {
   EXPECT_EQ(page.shownTrainees()[0].id, ben_);
   page.setGroupFilter({});
   EXPECT_EQ(page.shownTrainees().size(), 2);
+}
+
+TEST_F(ReviewPageTest, AbandonedAttemptsAreCountedNamedAndExported) {
+  assessment::AttemptStore attempts(history_);
+  const qint64 gaveUp = attempts.begin(ben_, QStringLiteral("03_single_stitch"), AttemptMode::Test).value_or(0);
+  ASSERT_TRUE(attempts.abandon(gaveUp));
+  const Viewer instructor = signInInstructor();
+  ReviewPage page(history_, instructor);
+
+  // the grid counts it among Ben's attempts and says how many were abandoned
+  int lessonColumn = -1;
+  for (int c = 0; c < page.grid()->columnCount(); ++c) {
+    if (page.lessonChooser()->itemData(c - 2).toString() == QStringLiteral("03_single_stitch")) lessonColumn = c;
+  }
+  ASSERT_GE(lessonColumn, 2);
+  const int benRow = page.shownTrainees()[0].id == ben_ ? 0 : 1;
+  const QTableWidgetItem* cell = page.grid()->item(benRow, lessonColumn);
+  EXPECT_TRUE(cell->text().contains(QStringLiteral("(3)"))) << cell->text().toStdString();
+  EXPECT_TRUE(cell->toolTip().contains(QStringLiteral("2 finished, 1 abandoned"))) << cell->toolTip().toStdString();
+
+  // its own word, apart from a crash's, in the detail, the PDF and the CSV
+  EXPECT_EQ(ReviewText::status(assessment::AttemptStatus::Abandoned), QStringLiteral("Abandoned"));
+  EXPECT_NE(ReviewText::status(assessment::AttemptStatus::Abandoned),
+            ReviewText::status(assessment::AttemptStatus::Interrupted));
+  const QString path = dir_.filePath(QStringLiteral("with-abandoned.csv"));
+  page.setCsvPath(path);
+  ASSERT_TRUE(page.exportCsv()) << page.message().toStdString();
+  QFile file(path);
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
+  const qsizetype status = records[0].indexOf(QStringLiteral("status"));
+  bool found = false;
+  for (const QStringList& row : records) {
+    if (row[0].toLongLong() != gaveUp) continue;
+    found = true;
+    EXPECT_EQ(row[status], QStringLiteral("abandoned"));
+  }
+  EXPECT_TRUE(found);
 }
 
 TEST_F(ReviewPageTest, ScoreChartHasOnePointPerFinishedAttempt) {
