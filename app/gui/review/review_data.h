@@ -1,6 +1,6 @@
 #pragma once
 // What the review screens show, computed from what the history hands out: no SQL here and
-// no widgets. The page asks HistoryDatabase with the signed-in Viewer (the storage layer
+// no widgets. The page asks the history's stores with the signed-in Viewer (the storage layer
 // decides what that viewer may see) and passes the rows to these functions.
 //
 // Grid cell of one trainee and one lesson:
