@@ -73,6 +73,18 @@ struct App {
     QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell.center());
     QTest::mouseClick(child<QPushButton>(button), Qt::LeftButton);
   }
+
+  // a new trainee opens lesson `row` with `button` and practises live for a few steps; the
+  // attempt page, once the history has begun the attempt
+  AttemptPage* practiseLive(const QString& trainee, int row, const char* button) {
+    createTrainee(trainee);
+    openLesson(row, button);
+    AttemptPage* attempt = window->attemptPage();
+    EXPECT_TRUE(attempt->isActive());
+    const auto running = [attempt] { return attempt->attemptId() != 0 && attempt->runner()->steps() > 5; };
+    EXPECT_TRUE(QTest::qWaitFor(running, 20000));
+    return attempt;
+  }
 };
 
 int reddishPixels(const QImage& image) {
@@ -144,14 +156,9 @@ TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
 
 TEST(LessonFlow, ClosingMidAttemptLeavesItUnfinished) {
   App app;
-  app.createTrainee(QStringLiteral("Bo Trainee"));
-  app.openLesson(2, "learnButton");
-  AttemptPage* attempt = app.window->attemptPage();
-  ASSERT_TRUE(attempt->isActive());
-  QTRY_VERIFY_WITH_TIMEOUT(attempt->attemptId() != 0, 20000);
+  AttemptPage* attempt = app.practiseLive(QStringLiteral("Bo Trainee"), 2, "learnButton");
   const qint64 id = attempt->attemptId();
-  // let the live simulation run a few steps
-  QTRY_VERIFY_WITH_TIMEOUT(attempt->runner()->steps() > 5, 20000);
+  ASSERT_NE(id, 0);
 
   app.window->close();
   EXPECT_FALSE(attempt->isActive());
@@ -190,13 +197,9 @@ void abandonAnswering(AttemptPage* page, QMessageBox::StandardButton answer) {
 
 TEST(LessonFlow, AbandonAsksFirstAndIsStoredAsAbandoned) {
   App app;
-  app.createTrainee(QStringLiteral("Cy Trainee"));
-  app.openLesson(2, "testButton");
-  AttemptPage* attempt = app.window->attemptPage();
-  ASSERT_TRUE(attempt->isActive());
-  QTRY_VERIFY_WITH_TIMEOUT(attempt->attemptId() != 0, 20000);
+  AttemptPage* attempt = app.practiseLive(QStringLiteral("Cy Trainee"), 2, "testButton");
   const qint64 id = attempt->attemptId();
-  QTRY_VERIFY_WITH_TIMEOUT(attempt->runner()->steps() > 5, 20000);
+  ASSERT_NE(id, 0);
 
   // "keep practising": nothing changes
   abandonAnswering(attempt, QMessageBox::No);

@@ -159,6 +159,16 @@ class ReviewPageTest : public ::testing::Test {
     return viewer.value_or(Viewer{});
   }
 
+  // the page's CSV export to file `name`, read back as records (the header first)
+  QList<QStringList> exportedCsv(ReviewPage& page, const QString& name) {
+    const QString path = dir_.filePath(name);
+    page.setCsvPath(path);
+    EXPECT_TRUE(page.exportCsv()) << page.message().toStdString();
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::ReadOnly));
+    return parseCsv(QString::fromUtf8(file.readAll()));
+  }
+
   QTemporaryDir dir_;
   assessment::HistoryDatabase history_;
   qint64 instructorId_ = 0;
@@ -173,13 +183,7 @@ TEST_F(ReviewPageTest, InstructorCsvRowsMatchTheDatabase) {
   page.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&page));
 
-  const QString path = dir_.filePath(QStringLiteral("export.csv"));
-  page.setCsvPath(path);
-  ASSERT_TRUE(page.exportCsv()) << page.message().toStdString();
-
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("export.csv"));
   const QList<AttemptSummary> stored = assessment::AttemptStore(history_).list(instructor);
   ASSERT_EQ(stored.size(), 6);
   ASSERT_EQ(records.size(), stored.size() + 1);
@@ -250,12 +254,8 @@ TEST_F(ReviewPageTest, AbandonedAttemptsAreCountedNamedAndExported) {
   EXPECT_EQ(ReviewText::status(assessment::AttemptStatus::Abandoned), QStringLiteral("Abandoned"));
   EXPECT_NE(ReviewText::status(assessment::AttemptStatus::Abandoned),
             ReviewText::status(assessment::AttemptStatus::Interrupted));
-  const QString path = dir_.filePath(QStringLiteral("with-abandoned.csv"));
-  page.setCsvPath(path);
-  ASSERT_TRUE(page.exportCsv()) << page.message().toStdString();
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("with-abandoned.csv"));
+  ASSERT_FALSE(records.isEmpty());
   const qsizetype status = records[0].indexOf(QStringLiteral("status"));
   bool found = false;
   for (const QStringList& row : records) {
@@ -315,12 +315,7 @@ TEST_F(ReviewPageTest, TraineeSeesOnlyTheirOwnHistory) {
   EXPECT_EQ(page.grid()->rowCount(), 1);
   EXPECT_EQ(page.traineeChooser()->count(), 1);
 
-  const QString path = dir_.filePath(QStringLiteral("mine.csv"));
-  page.setCsvPath(path);
-  ASSERT_TRUE(page.exportCsv());
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("mine.csv"));
   ASSERT_EQ(records.size(), 3);  // header and Ben's two attempts
   for (int i = 1; i < records.size(); ++i) EXPECT_EQ(records[i][1], QStringLiteral("Ben \"B\" O'Neil, Jr."));
 

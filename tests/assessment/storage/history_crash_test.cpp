@@ -9,13 +9,14 @@
 #include "microsim/assessment/storage/score_store.h"
 
 #include "assessment/storage/history_backend.h"
+#include "support/ready_child.h"
 
-#include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QProcess>
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace microsim::assessment {
@@ -38,7 +39,23 @@ TEST(HistoryCrashChild, DISABLED_BeginAttemptAndWait) {
   std::getline(std::cin, line);  // blocks until the parent kills us
 }
 
-class HistoryCrash : public HistoryBackend {};
+class HistoryCrash : public HistoryBackend {
+ protected:
+  // On PostgreSQL the server ends a killed or closed client's backend when it sees the socket
+  // close, a moment later; reopens `db` until the viewer's attempt `index` is no longer in
+  // progress or 20 s have passed (the session test is the backend's absence). SQLite knows
+  // at once.
+  void reopenUntilNotInProgress(HistoryDatabase& db, const Viewer& viewer, qsizetype index) {
+    if (GetParam() != Driver::PostgreSQL) return;
+    QDeadlineTimer deadline(20000);
+    while (AttemptStore(db).list(viewer).value(index).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
+      QSqlQuery wait(db.connection());
+      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
+      db.close();
+      openInto(db);
+    }
+  }
+};
 
 TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   qint64 trainee = 0, done = 0;
@@ -59,17 +76,11 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert(QStringLiteral("MICROSIM_CHILD_DB"), location_);
   env.insert(QStringLiteral("MICROSIM_CHILD_TRAINEE"), QString::number(trainee));
-  child.setProcessEnvironment(env);
-  child.start(QCoreApplication::applicationFilePath(),
-              {QStringLiteral("--gtest_filter=HistoryCrashChild.DISABLED_BeginAttemptAndWait"),
-               QStringLiteral("--gtest_also_run_disabled_tests")});
-  ASSERT_TRUE(child.waitForStarted());
-  QByteArray out;
-  const auto readyLine = [&out] { return out.contains("ready ") && out.indexOf('\n', out.indexOf("ready ")) > 0; };
-  while (!readyLine() && child.waitForReadyRead(30000)) out += child.readAllStandardOutput();
-  const QByteArray ready = out.mid(out.indexOf("ready "));
-  ASSERT_TRUE(ready.startsWith("ready ")) << out.toStdString() << child.readAllStandardError().toStdString();
-  const qint64 begun = ready.mid(6).trimmed().toLongLong();
+  std::string output;
+  const std::optional<qint64> ready = microsim::testing::startReadyChild(
+      child, QStringLiteral("HistoryCrashChild.DISABLED_BeginAttemptAndWait"), env, 30000, &output);
+  ASSERT_TRUE(ready.has_value()) << output;
+  const qint64 begun = *ready;
   child.kill();  // SIGKILL: no destructor, no rollback, no close
   ASSERT_TRUE(child.waitForFinished());
   EXPECT_EQ(child.exitStatus(), QProcess::CrashExit);
@@ -77,17 +88,7 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   HistoryDatabase db;
   openInto(db);
   const Viewer carla{trainee, Role::Trainee};
-  if (GetParam() == Driver::PostgreSQL) {
-    // the server ends the killed client's backend when it sees the socket close, a moment
-    // after the kill; reopen until it has (the session test is the backend's absence)
-    QDeadlineTimer deadline(20000);
-    while (AttemptStore(db).list(carla).value(1).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
-      QSqlQuery wait(db.connection());
-      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
-      db.close();
-      openInto(db);
-    }
-  }
+  reopenUntilNotInProgress(db, carla, 1);
   const QList<AttemptSummary> all = AttemptStore(db).list(carla);
   ASSERT_EQ(all.size(), 2);
   EXPECT_EQ(all[0].id, done);
@@ -137,16 +138,7 @@ TEST_P(HistoryCrash, AClosedConnectionsAttemptIsInterruptedAtTheNextOpenInTheSam
   HistoryDatabase next;
   openInto(next);
   const Viewer eli{trainee, Role::Trainee};
-  if (GetParam() == Driver::PostgreSQL) {
-    // the server ends the closed connection's backend a moment after the close
-    QDeadlineTimer deadline(20000);
-    while (AttemptStore(next).list(eli).value(0).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
-      QSqlQuery wait(next.connection());
-      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
-      next.close();
-      openInto(next);
-    }
-  }
+  reopenUntilNotInProgress(next, eli, 0);
   const QList<AttemptSummary> all = AttemptStore(next).list(eli);
   ASSERT_EQ(all.size(), 1);
   EXPECT_EQ(all[0].id, left);

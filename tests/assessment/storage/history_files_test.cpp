@@ -73,20 +73,30 @@ TEST(HistoryFiles, CorruptPagesAreRefusedAndLeftByteIdentical) {
   EXPECT_EQ(readAll(path), bytes);
 }
 
-TEST(HistoryFiles, SessionOneFileIsUpgradedInPlace) {
-  QTemporaryDir dir;
-  const QString path = dir.filePath(QStringLiteral("old.sqlite"));
+// an SQLite history at file `path` as an older microsim left it: the first `version`
+// migrations, then `rows` (SQL statements; each must succeed)
+void writeOldHistory(const QString& path, int version, const std::vector<const char*>& rows) {
   {
-    // exactly what session 1 created: migration 1 only
     QSqlDatabase old = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("old"));
     old.setDatabaseName(path);
     ASSERT_TRUE(old.open());
-    ASSERT_EQ(migrate(old, {bundledMigrations().front()}).version, 1);
     QSqlQuery q(old);
-    ASSERT_TRUE(q.exec(QStringLiteral("INSERT INTO trainees (name, created_at) VALUES ('Gus', '2026-11-01T09:00:00Z')")));
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA foreign_keys = ON")));
+    const std::vector<Migration> all = bundledMigrations();
+    ASSERT_EQ(migrate(old, {all.begin(), all.begin() + version}).version, version);
+    for (const char* sql : rows)
+      EXPECT_TRUE(q.exec(QString::fromLatin1(sql))) << sql << ": " << q.lastError().text().toStdString();
+    q.finish();
     old.close();
   }
   QSqlDatabase::removeDatabase(QStringLiteral("old"));
+}
+
+TEST(HistoryFiles, SessionOneFileIsUpgradedInPlace) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("old.sqlite"));
+  // exactly what session 1 created: migration 1 only
+  writeOldHistory(path, 1, {"INSERT INTO trainees (name, created_at) VALUES ('Gus', '2026-11-01T09:00:00Z')"});
   HistoryDatabase db;
   const DatabaseStatus status = db.open(path);
   ASSERT_TRUE(status.ok()) << status.driverMessage.toStdString();
@@ -97,43 +107,27 @@ TEST(HistoryFiles, SessionOneFileIsUpgradedInPlace) {
   EXPECT_TRUE(AttemptStore(db).begin(people[0].id, QStringLiteral("01_bite"), AttemptMode::Learn).has_value());
 }
 
-// one SQL statement on a raw connection; the test fails on an error
-void execute(QSqlDatabase& db, const QString& sql) {
-  QSqlQuery q(db);
-  EXPECT_TRUE(q.exec(sql)) << sql.toStdString() << ": " << q.lastError().text().toStdString();
-}
-
 TEST(HistoryFiles, SchemaThreeFileKeepsEveryRowAndItsGuardsWhenAbandonedArrives) {
   QTemporaryDir dir;
   const QString path = dir.filePath(QStringLiteral("v3.sqlite"));
-  {
-    // a history as schema 3 left it: a finished attempt with its score rows, recording and a
-    // note, an interrupted one and one in progress
-    QSqlDatabase old = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("v3"));
-    old.setDatabaseName(path);
-    ASSERT_TRUE(old.open());
-    execute(old, QStringLiteral("PRAGMA foreign_keys = ON"));
-    const std::vector<Migration> all = bundledMigrations();
-    ASSERT_EQ(migrate(old, {all[0], all[1], all[2]}).version, 3);
-    for (const char* sql : {
-             "INSERT INTO trainees (id, name, role, created_at) VALUES (7, 'Lena', 'trainee', 't')",
-             "INSERT INTO trainees (id, name, role, created_at) VALUES (8, 'Ines', 'instructor', 't')",
-             "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
-             "VALUES (40, 7, '01_bite', 'test', 'in_progress', 't1', NULL, '')",
-             "INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version) VALUES (40, 81, 1, 'r', 2)",
-             "INSERT INTO score_metrics (attempt_id, position, metric, value, unit, target, tolerance, weight, "
-             "points, feedback) VALUES (40, 0, 'time', 61, 's', 60, 30, 1, 0.9, '')",
-             "INSERT INTO recordings (attempt_id, data) VALUES (40, X'4D5352')",
-             "UPDATE attempts SET status = 'finished', finished_at = 't2' WHERE id = 40",
-             "INSERT INTO annotations (attempt_id, author_id, note, created_at) VALUES (40, 8, 'steady', 't3')",
-             "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
-             "VALUES (41, 7, '01_bite', 'learn', 'interrupted', 't4', 't5', 'x')",
-             "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
-             "VALUES (42, 7, '02_needle_entry', 'test', 'in_progress', 't6', NULL, '1@another-host')"})
-      execute(old, QString::fromLatin1(sql));
-    old.close();
-  }
-  QSqlDatabase::removeDatabase(QStringLiteral("v3"));
+  // a history as schema 3 left it: a finished attempt with its score rows, recording and a
+  // note, an interrupted one and one in progress
+  writeOldHistory(
+      path, 3,
+      {"INSERT INTO trainees (id, name, role, created_at) VALUES (7, 'Lena', 'trainee', 't')",
+       "INSERT INTO trainees (id, name, role, created_at) VALUES (8, 'Ines', 'instructor', 't')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (40, 7, '01_bite', 'test', 'in_progress', 't1', NULL, '')",
+       "INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version) VALUES (40, 81, 1, 'r', 2)",
+       "INSERT INTO score_metrics (attempt_id, position, metric, value, unit, target, tolerance, weight, "
+       "points, feedback) VALUES (40, 0, 'time', 61, 's', 60, 30, 1, 0.9, '')",
+       "INSERT INTO recordings (attempt_id, data) VALUES (40, X'4D5352')",
+       "UPDATE attempts SET status = 'finished', finished_at = 't2' WHERE id = 40",
+       "INSERT INTO annotations (attempt_id, author_id, note, created_at) VALUES (40, 8, 'steady', 't3')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (41, 7, '01_bite', 'learn', 'interrupted', 't4', 't5', 'x')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (42, 7, '02_needle_entry', 'test', 'in_progress', 't6', NULL, '1@another-host')"});
 
   HistoryDatabase db;
   const DatabaseStatus status = db.open(path);

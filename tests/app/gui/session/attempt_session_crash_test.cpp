@@ -6,12 +6,12 @@
 #include "gui/session/attempt_session.h"
 #include "gui/simulation_runner.h"
 #include "lesson/lesson.h"
+#include "support/ready_child.h"
 
 #include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
 #include "microsim/assessment/storage/people_store.h"
 
-#include <QCoreApplication>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -21,6 +21,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,17 +78,11 @@ TEST(AttemptSessionCrash, AKilledAttemptIsInterruptedWhenTheNextSessionStarts) {
   env.insert(QStringLiteral("MICROSIM_CHILD_DB"), location);
   env.insert(QStringLiteral("MICROSIM_CHILD_TRAINEE"), QString::number(trainee));
   env.insert(QStringLiteral("MICROSIM_CHILD_RECORDINGS"), dir.filePath(QStringLiteral("child-recordings")));
-  child.setProcessEnvironment(env);
-  child.start(QCoreApplication::applicationFilePath(),
-              {QStringLiteral("--gtest_filter=AttemptSessionCrashChild.DISABLED_StartLiveAndWait"),
-               QStringLiteral("--gtest_also_run_disabled_tests")});
-  ASSERT_TRUE(child.waitForStarted());
-  QByteArray out;
-  const auto readyLine = [&out] { return out.contains("ready ") && out.indexOf('\n', out.indexOf("ready ")) > 0; };
-  while (!readyLine() && child.waitForReadyRead(60000)) out += child.readAllStandardOutput();
-  const QByteArray ready = out.mid(out.indexOf("ready "));
-  ASSERT_TRUE(ready.startsWith("ready ")) << out.toStdString() << child.readAllStandardError().toStdString();
-  const qint64 killed = ready.mid(6).trimmed().toLongLong();
+  std::string output;
+  const std::optional<qint64> ready = testing::startReadyChild(
+      child, QStringLiteral("AttemptSessionCrashChild.DISABLED_StartLiveAndWait"), env, 60000, &output);
+  ASSERT_TRUE(ready.has_value()) << output;
+  const qint64 killed = *ready;
   child.kill();  // SIGKILL: no destructor, no close
   ASSERT_TRUE(child.waitForFinished());
   EXPECT_EQ(child.exitStatus(), QProcess::CrashExit);
