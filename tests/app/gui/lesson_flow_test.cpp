@@ -74,6 +74,14 @@ struct App {
     QTest::mouseClick(child<QPushButton>(button), Qt::LeftButton);
   }
 
+  // the attempts of the history's one trainee, oldest first
+  QList<assessment::AttemptSummary> traineesAttempts() {
+    const QList<assessment::Trainee> people = assessment::PeopleStore(history).trainees();
+    EXPECT_EQ(people.size(), 1);
+    if (people.isEmpty()) return {};
+    return assessment::AttemptStore(history).list({people[0].id, assessment::Role::Trainee});
+  }
+
   // a new trainee opens lesson `row` with `button` and practises live for a few steps; the
   // attempt page, once the history has begun the attempt
   AttemptPage* practiseLive(const QString& trainee, int row, const char* button) {
@@ -138,9 +146,7 @@ TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
   EXPECT_NEAR(result.score.score, testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 
   // stored as a finished Test attempt with that score
-  const QList<assessment::Trainee> people = assessment::PeopleStore(app.history).trainees();
-  ASSERT_EQ(people.size(), 1);
-  const QList<assessment::AttemptSummary> mine = assessment::AttemptStore(app.history).list({people[0].id, assessment::Role::Trainee});
+  const QList<assessment::AttemptSummary> mine = app.traineesAttempts();
   ASSERT_EQ(mine.size(), 1);
   EXPECT_EQ(mine[0].status, assessment::AttemptStatus::Finished);
   EXPECT_EQ(mine[0].mode, assessment::AttemptMode::Test);
@@ -214,9 +220,7 @@ TEST(LessonFlow, AbandonAsksFirstAndIsStoredAsAbandoned) {
   EXPECT_FALSE(attempt->isActive());
   EXPECT_FALSE(attempt->runner()->isRunning());
   EXPECT_EQ(app.window->currentPage(), app.window->lessonListPage());
-  const QList<assessment::Trainee> people = assessment::PeopleStore(app.history).trainees();
-  ASSERT_EQ(people.size(), 1);
-  const QList<assessment::AttemptSummary> attempts = assessment::AttemptStore(app.history).list({people[0].id, assessment::Role::Trainee});
+  const QList<assessment::AttemptSummary> attempts = app.traineesAttempts();
   ASSERT_EQ(attempts.size(), 1);
   EXPECT_EQ(attempts[0].id, id);
   EXPECT_EQ(attempts[0].status, assessment::AttemptStatus::Abandoned);
