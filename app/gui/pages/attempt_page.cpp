@@ -117,7 +117,8 @@ bool AttemptPage::begin(const lesson::Lesson& lesson, int lessonIndex, assessmen
   session_ = std::move(session);
   connect(session_.get(), &AttemptSession::progressed, this, &AttemptPage::showProgress);
   connect(session_.get(), &AttemptSession::begun, this, [this](qint64 id) {
-    if (id == 0) status_->setText(tr("This attempt is not stored (no history)."));
+    // a refusal the history gave (failed, just before) says more than this
+    if (id == 0 && status_->text().isEmpty()) status_->setText(tr("This attempt is not stored (no history)."));
   });
   connect(session_.get(), &AttemptSession::failed, this,
           [this](const AttemptProblem& p) { status_->setText(describe(p)); });

@@ -6,6 +6,7 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QJsonObject>
 #include <QTimer>
 
 #include <algorithm>
@@ -19,6 +20,7 @@ AttemptSession::AttemptSession(QObject* parent)
   qRegisterMetaType<microsim::gui::AttemptResult>();
   qRegisterMetaType<microsim::gui::AttemptProblem>();
   qRegisterMetaType<microsim::gui::AttemptProgress>();
+  qRegisterMetaType<microsim::gui::AttemptScoring>();
   progressTimer_ = new QTimer(this);
   progressTimer_->setInterval(100);
   connect(progressTimer_, &QTimer::timeout, this, &AttemptSession::poll);
@@ -75,9 +77,15 @@ bool AttemptSession::prepare(const AttemptSetup& setup, AttemptProblem* problem)
   runner_->setRecordingFile(recordingPath_, metadata);
 
   // the attempt in the history, on the worker's thread and connection
-  worker_ = new AttemptWorker(setup.viewer.userId != 0 ? setup.historyLocation : QString());
+  worker_ = new AttemptWorker(setup.viewer.userId != 0 ? setup.historyLocation : QString(), setup.viewer.userId,
+                              setup.lesson.id, setup.mode);
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+  requests_ = std::make_unique<AttemptRequests>();
+  connect(requests_.get(), &AttemptRequests::begin, worker_, &AttemptWorker::begin);
+  connect(requests_.get(), &AttemptRequests::score, worker_, &AttemptWorker::score);
+  connect(requests_.get(), &AttemptRequests::abandon, worker_, &AttemptWorker::abandon);
+  connect(requests_.get(), &AttemptRequests::close, worker_, &AttemptWorker::close);
   connect(worker_, &AttemptWorker::begun, this, [this](qint64 id) {
     attemptId_ = id;
     Q_EMIT begun(id);
@@ -90,10 +98,7 @@ bool AttemptSession::prepare(const AttemptSetup& setup, AttemptProblem* problem)
   connect(worker_, &AttemptWorker::failed, this, &AttemptSession::failed);
   thread_.setObjectName(QStringLiteral("attempt history"));
   thread_.start();
-  const qint64 trainee = setup.viewer.userId;
-  const QString lesson = setup.lesson.id;
-  const assessment::AttemptMode mode = setup.mode;
-  post([trainee, lesson, mode](AttemptWorker& worker) { worker.begin(trainee, lesson, mode); });
+  Q_EMIT requests_->begin();
 
   state_ = State::Active;
   poll();
@@ -128,14 +133,14 @@ void AttemptSession::finish() {
   request.base.mode = setup_.mode;
   request.base.recordingPath = recordingPath_;
   for (const sim::SceneVessel& v : def_.vessels) request.base.vessels.push_back(v.def);
-  post([request = std::move(request)](AttemptWorker& worker) { worker.score(request); });
+  Q_EMIT requests_->score(request);
 }
 
 void AttemptSession::abandon() {
   if (state_ != State::Active) return;
   stopRunning();
   state_ = State::Abandoned;
-  post([](AttemptWorker& worker) { worker.abandon(); });
+  Q_EMIT requests_->abandon();
 }
 
 void AttemptSession::stop() {
@@ -149,18 +154,11 @@ void AttemptSession::stopRunning() {
   replaying_ = false;
 }
 
-void AttemptSession::post(std::function<void(AttemptWorker&)> request) {
-  AttemptWorker* worker = worker_;
-  QMetaObject::invokeMethod(worker_, [worker, request = std::move(request)] { request(*worker); },
-                            Qt::QueuedConnection);
-}
-
 void AttemptSession::shutDownWorker() {
   if (!worker_) return;
-  // posted after every request, so each runs before the thread ends; the worker (and the
+  // sent after every request, so each runs before the thread ends; the worker (and the
   // history connection it holds) is deleted on its own thread as it finishes
-  QThread* thread = &thread_;
-  post([thread](AttemptWorker&) { thread->quit(); });
+  Q_EMIT requests_->close();
   thread_.wait();
   worker_ = nullptr;
 }

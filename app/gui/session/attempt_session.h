@@ -35,15 +35,14 @@
 #include <QObject>
 #include <QThread>
 
-#include <functional>
 #include <memory>
-#include <optional>
 #include <vector>
 
 class QTimer;
 
 namespace microsim::gui {
 
+class AttemptRequests;
 class AttemptWorker;
 class SimulationRunner;
 
@@ -113,7 +112,6 @@ class AttemptSession : public QObject {
  private:
   void poll();
   void stopRunning();
-  void post(std::function<void(AttemptWorker&)> request);
   void shutDownWorker();
 
   AttemptSetup setup_;
@@ -121,6 +119,7 @@ class AttemptSession : public QObject {
   sim::SceneDef def_;
   std::unique_ptr<SimulationRunner> runner_;
   QTimer* progressTimer_ = nullptr;
+  std::unique_ptr<AttemptRequests> requests_;  // to the worker, queued
   QThread thread_;
   AttemptWorker* worker_ = nullptr;  // lives on thread_, deleted there when it finishes
 

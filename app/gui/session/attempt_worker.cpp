@@ -6,6 +6,7 @@
 #include "microsim/sim/scene/recording.h"
 
 #include <QFile>
+#include <QThread>
 
 #include <cstdint>
 #include <optional>
@@ -26,11 +27,12 @@ AttemptProblem historyProblem(AttemptFailure failure, const QString& driverMessa
 
 }  // namespace
 
-AttemptWorker::AttemptWorker(QString historyLocation) : location_(std::move(historyLocation)) {}
+AttemptWorker::AttemptWorker(QString historyLocation, qint64 traineeId, QString lesson, assessment::AttemptMode mode)
+    : location_(std::move(historyLocation)), traineeId_(traineeId), lesson_(std::move(lesson)), mode_(mode) {}
 
 AttemptWorker::~AttemptWorker() = default;
 
-void AttemptWorker::begin(qint64 traineeId, const QString& lesson, assessment::AttemptMode mode) {
+void AttemptWorker::begin() {
   if (location_.isEmpty()) {
     Q_EMIT begun(0);
     return;
@@ -43,7 +45,7 @@ void AttemptWorker::begin(qint64 traineeId, const QString& lesson, assessment::A
     return;
   }
   assessment::AttemptStore attempts(*history_);
-  const std::optional<qint64> id = attempts.begin(traineeId, lesson, mode);
+  const std::optional<qint64> id = attempts.begin(traineeId_, lesson_, mode_);
   if (!id) Q_EMIT failed(historyProblem(AttemptFailure::HistoryUnavailable, attempts.lastError().driverMessage));
   attemptId_ = id.value_or(0);
   Q_EMIT begun(attemptId_);
@@ -84,6 +86,8 @@ void AttemptWorker::score(const AttemptScoring& request) {
   }
   Q_EMIT scored(result);
 }
+
+void AttemptWorker::close() { thread()->quit(); }
 
 void AttemptWorker::abandon() {
   if (!history_ || attemptId_ == 0) {

@@ -1,8 +1,9 @@
 #pragma once
 // The part of one attempt that runs off the GUI thread, on its AttemptSession's worker
 // QThread: the history connection (opened, used and closed on that thread, as QtSql wants
-// of a connection) and the graded replay. Requests arrive as queued calls and run in the
-// order they were posted; results leave as signals, queued to the session.
+// of a connection) and the graded replay. Requests arrive as the signals of the session's
+// AttemptRequests, connected queued to the slots below, so they run on the worker's thread
+// in the order they were sent; results leave as signals, queued to the session.
 //
 // The attempt in the history: begin() opens the history (which marks the attempts of
 // ended sessions interrupted) and begins it; score() stores its score and recording,
@@ -31,23 +32,38 @@ struct AttemptScoring {
   AttemptResult base;           ///< lesson, mode, vessels and recording path of the result
 };
 
+/// What the session asks of its worker; each signal is connected queued to the worker's slot
+/// of the same name.
+class AttemptRequests : public QObject {
+  Q_OBJECT
+
+ Q_SIGNALS:
+  void begin();
+  void score(const microsim::gui::AttemptScoring& request);
+  void abandon();
+  void close();
+};
+
 class AttemptWorker : public QObject {
   Q_OBJECT
 
  public:
-  /// `historyLocation`: an SQLite file or PostgreSQL URL (HistoryDatabase::open); empty:
-  /// nothing is stored.
-  explicit AttemptWorker(QString historyLocation);
+  /// The attempt of `traineeId` at `lesson` in `mode`; `historyLocation`: an SQLite file or
+  /// PostgreSQL URL (HistoryDatabase::open); empty: nothing is stored.
+  AttemptWorker(QString historyLocation, qint64 traineeId, QString lesson, assessment::AttemptMode mode);
   ~AttemptWorker() override;
 
+ public Q_SLOTS:
   /// Opens the history and begins the attempt; emits begun, or failed and begun(0).
-  void begin(qint64 traineeId, const QString& lesson, assessment::AttemptMode mode);
+  void begin();
   /// Replays the recording on the scene, scores it against the rubric and stores score and
   /// recording with the begun attempt in one transaction; emits scored.
   void score(const microsim::gui::AttemptScoring& request);
   /// Marks the begun attempt abandoned; emits abandoned (and failed first when the history
   /// refused).
   void abandon();
+  /// Ends the worker's thread once this call is reached: after every request sent before it.
+  void close();
 
  Q_SIGNALS:
   void begun(qint64 attemptId);
@@ -57,8 +73,13 @@ class AttemptWorker : public QObject {
 
  private:
   QString location_;
+  qint64 traineeId_;
+  QString lesson_;
+  assessment::AttemptMode mode_;
   std::unique_ptr<assessment::HistoryDatabase> history_;  // opened by begin, on this thread
   qint64 attemptId_ = 0;
 };
 
 }  // namespace microsim::gui
+
+Q_DECLARE_METATYPE(microsim::gui::AttemptScoring)
