@@ -42,9 +42,16 @@ AttemptSession::~AttemptSession() {
 }
 
 bool AttemptSession::prepare(const AttemptSetup& setup, AttemptProblem* problem) {
-  if (state_ != State::Idle) return false;
+  if (state_ != State::Idle || !loadLesson(setup, problem)) return false;
   setup_ = setup;
+  startRecording();
+  startWorker();
+  state_ = State::Active;
+  poll();
+  return true;
+}
 
+bool AttemptSession::loadLesson(const AttemptSetup& setup, AttemptProblem* problem) {
   // the rubric, and the scene with the solver settings
   const auto rubric = assessment::loadRubric(setup.lesson.rubricPath.toStdString());
   if (const auto* e = std::get_if<assessment::RubricError>(&rubric)) {
@@ -63,22 +70,29 @@ bool AttemptSession::prepare(const AttemptSetup& setup, AttemptProblem* problem)
     *problem = {AttemptFailure::UnknownSolver, setup.lesson.scenePath, setup.solver.solver, 0, {}};
     return false;
   }
+  return true;
+}
+
+void AttemptSession::startRecording() {
   // stepped deterministically, live too: the frames the attempt consumed replay to the very
   // states the trainee saw, and the score is computed on those (a slow step makes the scene
   // lag the hand rather than show a tissue the score will not see)
   runner_->load(def_, sim::StepMode::Deterministic);
   const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"));
-  QDir().mkpath(setup.recordingFolder);
-  recordingPath_ = QDir(setup.recordingFolder).filePath(QStringLiteral("%1-%2.msrec").arg(setup.lesson.id, stamp));
+  QDir().mkpath(setup_.recordingFolder);
+  recordingPath_ = QDir(setup_.recordingFolder).filePath(QStringLiteral("%1-%2.msrec").arg(setup_.lesson.id, stamp));
   // the recording says which lesson it is and, when the settings changed it, the solver
-  QJsonObject metadata{{QStringLiteral("lesson"), setup.lesson.id}};
-  if (const QJsonObject solver = settings::solverOverrideJson(def_, setup.solver); !solver.isEmpty())
+  QJsonObject metadata{{QStringLiteral("lesson"), setup_.lesson.id}};
+  if (const QJsonObject solver = settings::solverOverrideJson(def_, setup_.solver); !solver.isEmpty())
     metadata.insert(QStringLiteral("solver"), solver);
   runner_->setRecordingFile(recordingPath_, metadata);
+}
 
+void AttemptSession::startWorker() {
   // the attempt in the history, on the worker's thread and connection
-  worker_ = new AttemptWorker(setup.viewer.userId != 0 ? setup.historyLocation : QString(), setup.viewer.userId,
-                              setup.lesson.id, setup.mode);
+  const assessment::Viewer& viewer = setup_.viewer;
+  worker_ = new AttemptWorker(viewer.userId != 0 ? setup_.historyLocation : QString(), viewer.userId,
+                              setup_.lesson.id, setup_.mode);
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
   requests_ = std::make_unique<AttemptRequests>();
@@ -99,10 +113,6 @@ bool AttemptSession::prepare(const AttemptSetup& setup, AttemptProblem* problem)
   thread_.setObjectName(QStringLiteral("attempt history"));
   thread_.start();
   Q_EMIT requests_->begin();
-
-  state_ = State::Active;
-  poll();
-  return true;
 }
 
 void AttemptSession::startLive() {

@@ -110,6 +110,9 @@ class AttemptSession : public QObject {
   void failed(const microsim::gui::AttemptProblem& problem);
 
  private:
+  bool loadLesson(const AttemptSetup& setup, AttemptProblem* problem);
+  void startRecording();
+  void startWorker();
   void poll();
   void stopRunning();
   void shutDownWorker();
