@@ -1,5 +1,7 @@
 #include "gui/simulation_runner.h"
 
+#include "microsim/sim/scene/recorded_scene.h"
+
 #include <QJsonDocument>
 
 #include <pthread.h>
@@ -136,10 +138,13 @@ void SimulationRunner::openRecording() {
   const std::lock_guard lock(resultsMutex_);
   recordingStatus_ = {};
   if (recordingPath_.isEmpty() || writer_.isOpen()) return;
-  // the metadata names the scene, as `microsim-cli run` and `score` read it
-  QJsonObject meta = recordingMetadata_;
-  meta.insert(QStringLiteral("scene"), scenePath_);
-  recordingStatus_ = writer_.open(recordingPath_.toStdString(), QJsonDocument(meta).toJson(QJsonDocument::Compact).toStdString());
+  // the header names the scene (absolute, with its digest), so that `microsim-cli run` and
+  // `score` replay the file on the scene it was made on without being told; the metadata is
+  // what the caller adds (the app: the lesson, and the solver when the settings changed it)
+  const std::string metadata =
+      recordingMetadata_.isEmpty() ? std::string()
+                                   : QJsonDocument(recordingMetadata_).toJson(QJsonDocument::Compact).toStdString();
+  recordingStatus_ = writer_.open(recordingPath_.toStdString(), sim::recordScene(scenePath_.toStdString()), metadata);
 }
 
 void SimulationRunner::finishRecording() {

@@ -67,7 +67,7 @@ class SimulationRunner : public QObject {
   void replay(std::vector<sim::InputFrame> frames);
   /// Records every consumed InputFrame to this file from the next start()/replay() on (empty:
   /// no recording); the file is finished on stop(), at the end of a replay, or on destruction.
-  /// Its metadata is `metadata` with "scene" set to the loaded scene's path.
+  /// Its header names the loaded scene; `metadata` (empty: none) goes in as compact JSON.
   void setRecordingFile(const QString& path, const QJsonObject& metadata = {});
   /// The recording's state (CannotOpen / CannotWrite when writing failed).
   sim::RecordingStatus recordingStatus() const;

@@ -247,7 +247,8 @@ TEST_F(AttemptSessionTest, SolverSettingsApplyInMemoryAndTheRecordingNamesThem) 
   ASSERT_TRUE(sim::readRecording(session.recordingPath().toStdString(), recording).ok());
   EXPECT_EQ(recording.frames.size(), 20u);
   const QJsonObject meta = QJsonDocument::fromJson(QByteArray::fromStdString(recording.metadata)).object();
-  EXPECT_EQ(meta.value(QStringLiteral("scene")).toString(), needleEntry_.scenePath);
+  EXPECT_EQ(QString::fromStdString(recording.scene.path), QFileInfo(needleEntry_.scenePath).absoluteFilePath())
+      << "the header names the lesson's own scene file, not a patched copy";
   EXPECT_EQ(meta.value(QStringLiteral("lesson")).toString(), QStringLiteral("02_needle_entry"));
   EXPECT_EQ(meta.value(QStringLiteral("solver")).toObject(),
             (QJsonObject{{QStringLiteral("name"), QStringLiteral("newton")}, {QStringLiteral("iterations"), 7}}));
