@@ -1202,10 +1202,6 @@
         <translation>No se puede leer la rúbrica %1 (campo %2, línea %3).</translation>
     </message>
     <message>
-        <source>The scene %1 cannot be prepared: %2</source>
-        <translation>No se puede preparar la escena %1: %2</translation>
-    </message>
-    <message>
         <source>The scene %1 cannot be loaded (field %2, line %3).</source>
         <translation>No se puede cargar la escena %1 (campo %2, línea %3).</translation>
     </message>
@@ -1240,6 +1236,30 @@
     <message>
         <source>The score could not be stored (%1).</source>
         <translation>No se pudo guardar la puntuación (%1).</translation>
+    </message>
+    <message>
+        <source>Abandon the attempt?</source>
+        <translation>¿Abandonar el intento?</translation>
+    </message>
+    <message>
+        <source>The attempt ends here without a score. It stays in your history as abandoned.</source>
+        <translation>El intento termina aquí sin calificación. Queda en su historial como abandonado.</translation>
+    </message>
+    <message>
+        <source>Keep practising</source>
+        <translation>Seguir practicando</translation>
+    </message>
+    <message>
+        <source>The tissue solver %1 chosen in the settings is not known; choose another.</source>
+        <translation>El solucionador de tejido %1 elegido en los ajustes no se conoce; elija otro.</translation>
+    </message>
+    <message>
+        <source>This attempt is not stored: the history refused it (%1).</source>
+        <translation>Este intento no se guarda: el historial lo rechazó (%1).</translation>
+    </message>
+    <message>
+        <source>The history could not mark the attempt abandoned (%1).</source>
+        <translation>El historial no pudo marcar el intento como abandonado (%1).</translation>
     </message>
 </context>
 <context>
@@ -2281,10 +2301,6 @@ Error RMS %7 mm, máximo %8 mm
         <source>Group</source>
         <translation>Grupo</translation>
     </message>
-    <message numerus="yes">
-        <source>%n attempt(s), %1 finished</source>
-        <translation><numerusform>%n intento, %1 terminados</numerusform><numerusform>%n intentos, %1 terminados</numerusform></translation>
-    </message>
     <message>
         <source>That attempt could not be read.</source>
         <translation>No se pudo leer ese intento.</translation>
@@ -2328,6 +2344,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Saved the report to %1.</source>
         <translation>Informe guardado en %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n attempt(s): %1 finished, %2 abandoned</source>
+        <translation><numerusform>%n intento: %1 terminados, %2 abandonados</numerusform><numerusform>%n intentos: %1 terminados, %2 abandonados</numerusform></translation>
     </message>
 </context>
 <context>
@@ -2638,6 +2658,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Back wall</source>
         <translation>Pared posterior</translation>
+    </message>
+    <message>
+        <source>Abandoned</source>
+        <translation>Abandonado</translation>
     </message>
 </context>
 <context>

@@ -86,6 +86,7 @@ QString ReviewText::status(assessment::AttemptStatus status) {
     case assessment::AttemptStatus::InProgress: return tr("In progress");
     case assessment::AttemptStatus::Finished: return tr("Finished");
     case assessment::AttemptStatus::Interrupted: return tr("Interrupted");
+    case assessment::AttemptStatus::Abandoned: return tr("Abandoned");
   }
   return {};
 }

@@ -117,14 +117,19 @@ Attempt AttemptRecorder::attempt(const sim::Scene& scene) const {
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const sim::Recording& recording,
                                                  bool truncated) {
-  auto opened = sim::openScene(scenePath, sim::StepMode::Deterministic);
-  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
+  sim::SceneDefLoad loaded = sim::loadSceneDef(scenePath);
+  if (auto* e = std::get_if<sim::SceneError>(&loaded)) {
     ReplayError err;
     err.kind = ReplayErrorKind::Scene;
     err.sceneError = *e;
     return err;
   }
-  sim::Scene& scene = *std::get<std::unique_ptr<sim::Scene>>(opened);
+  return replayAttempt(std::get<sim::SceneDef>(loaded), recording, truncated);
+}
+
+std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def, const sim::Recording& recording,
+                                                 bool truncated) {
+  sim::Scene scene(def, sim::StepMode::Deterministic);
   AttemptRecorder recorder;
   for (const sim::InputFrame& f : recording.frames) {
     scene.step(f);

@@ -114,5 +114,9 @@ std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const sim::Recording& recording,
                                                  bool truncated);
+/// The same on a scene definition already loaded (and perhaps changed in memory, as the
+/// app's solver settings change it): the recording replays on exactly that scene.
+std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& scene, const sim::Recording& recording,
+                                                 bool truncated);
 
 }  // namespace microsim::assessment
