@@ -26,6 +26,11 @@ StartCheckRun runStartCheck(const QTemporaryDir& home, const QString& database, 
   env.insert(QStringLiteral("HOME"), home.path());
   env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
   env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+  // a runtime folder of its own, or Qt warns on stderr where it had none (CI under xvfb-run)
+  const QString runtime = home.filePath(QStringLiteral("runtime"));
+  QDir().mkpath(runtime);
+  QFile::setPermissions(runtime, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+  env.insert(QStringLiteral("XDG_RUNTIME_DIR"), runtime);
   env.remove(QStringLiteral("MICROSIM_RESOURCES"));
   if (!resources.isEmpty()) env.insert(QStringLiteral("MICROSIM_RESOURCES"), resources);
   QProcess app;
