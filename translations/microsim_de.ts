@@ -1614,6 +1614,26 @@
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Nadel außerhalb ihres Bogens</translation>
+    </message>
+    <message>
+        <source>Pass each wall once: every extra passage injures it.</source>
+        <translation>Jede Wand nur einmal durchstechen: jeder weitere Durchstich verletzt sie.</translation>
+    </message>
+    <message>
+        <source>Turn the needle along its curve instead of pushing it.</source>
+        <translation>Die Nadel entlang ihrer Krümmung drehen, statt sie zu schieben.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue, not turned along its curve.</source>
+        <translation>Die Nadel wurde seitlich durch das Gewebe gezogen statt entlang ihrer Krümmung gedreht.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2662,6 +2682,26 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Abandoned</source>
         <translation>Aufgegeben</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Nadel außerhalb ihres Bogens</translation>
+    </message>
+    <message>
+        <source>The wall was passed more often than needed.</source>
+        <translation>Die Wand wurde öfter als nötig durchstochen.</translation>
+    </message>
+    <message>
+        <source>The needle was pushed rather than turned along its curve.</source>
+        <translation>Die Nadel wurde geschoben statt entlang ihrer Krümmung gedreht.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue.</source>
+        <translation>Die Nadel wurde seitlich durch das Gewebe gezogen.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
     </message>
 </context>
 <context>

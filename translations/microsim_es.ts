@@ -1614,6 +1614,26 @@
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Aguja fuera de su arco</translation>
+    </message>
+    <message>
+        <source>Pass each wall once: every extra passage injures it.</source>
+        <translation>Atraviese cada pared una sola vez: cada paso de más la lesiona.</translation>
+    </message>
+    <message>
+        <source>Turn the needle along its curve instead of pushing it.</source>
+        <translation>Gire la aguja siguiendo su curva en lugar de empujarla.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue, not turned along its curve.</source>
+        <translation>La aguja se arrastró de lado por el tejido en lugar de girarla siguiendo su curva.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2662,6 +2682,26 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Abandoned</source>
         <translation>Abandonado</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Aguja fuera de su arco</translation>
+    </message>
+    <message>
+        <source>The wall was passed more often than needed.</source>
+        <translation>La pared se atravesó más veces de las necesarias.</translation>
+    </message>
+    <message>
+        <source>The needle was pushed rather than turned along its curve.</source>
+        <translation>La aguja se empujó en lugar de girarla siguiendo su curva.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue.</source>
+        <translation>La aguja se arrastró de lado por el tejido.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
     </message>
 </context>
 <context>

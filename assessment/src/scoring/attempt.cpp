@@ -69,6 +69,8 @@ Attempt assembleAttempt(const sim::SceneDef& def, std::vector<sim::SceneEvent> e
   a.duration = a.steps * a.stepDt;
   a.maxStretch = maxStretch;
   a.sceneFile = def.file;
+  if (def.needle && def.needle->suture.needleShape == sim::suture::NeedleShape::Curved)
+    a.needleRadius = def.needle->suture.needleRadius;
 
   // the frames as the scene used them: a rejected one repeats the last accepted one
   std::optional<sim::InputFrame> last;
