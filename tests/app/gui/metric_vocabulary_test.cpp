@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
 
 namespace microsim::gui {
 namespace {
@@ -42,7 +43,7 @@ TEST(MetricVocabulary, EveryScoredMetricAndPierceFieldHasALabel) {
   }
   // a key from a newer rubric comes back as it is
   EXPECT_FALSE(MetricVocabulary::hasMetricLabel("knot_tension"));
-  EXPECT_EQ(MetricVocabulary::metricLabel("knot_tension"), QStringLiteral("knot_tension"));
+  EXPECT_EQ(MetricVocabulary::metricLabel(std::string_view("knot_tension")), QStringLiteral("knot_tension"));
 }
 
 TEST(MetricVocabulary, EveryLabelIsTranslatedIntoGermanAndSpanish) {
@@ -102,7 +103,7 @@ TEST(MetricVocabulary, ResultsAndReviewPagesShowTheSameLabelForEachMetric) {
     EXPECT_EQ(resultsTable->item(row, 0)->text(), reviewTable->item(row, 0)->text()) << key;
     EXPECT_EQ(reviewTable->item(row, 0)->text(), MetricVocabulary::metricLabel(key)) << key;
   }
-  EXPECT_EQ(MetricVocabulary::metricLabel("bite_symmetry"), QStringLiteral("Bite asymmetry"));
+  EXPECT_EQ(MetricVocabulary::metricLabel(std::string_view("bite_symmetry")), QStringLiteral("Bite asymmetry"));
 }
 
 }  // namespace
