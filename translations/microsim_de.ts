@@ -1419,94 +1419,6 @@
 <context>
     <name>microsim::gui::FeedbackText</name>
     <message>
-        <source>Time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <source>Path length</source>
-        <translation>Weglänge</translation>
-    </message>
-    <message>
-        <source>Path length, left hand</source>
-        <translation>Weglänge, linke Hand</translation>
-    </message>
-    <message>
-        <source>Path length, right hand</source>
-        <translation>Weglänge, rechte Hand</translation>
-    </message>
-    <message>
-        <source>Movements</source>
-        <translation>Bewegungen</translation>
-    </message>
-    <message>
-        <source>Smoothness</source>
-        <translation>Gleichmäßigkeit</translation>
-    </message>
-    <message>
-        <source>Idle time</source>
-        <translation>Leerlaufzeit</translation>
-    </message>
-    <message>
-        <source>Re-grasps</source>
-        <translation>Nachgriffe</translation>
-    </message>
-    <message>
-        <source>Suture breaks</source>
-        <translation>Fadenrisse</translation>
-    </message>
-    <message>
-        <source>Largest tissue stretch</source>
-        <translation>Größte Gewebedehnung</translation>
-    </message>
-    <message>
-        <source>Tissue damage</source>
-        <translation>Gewebeschaden</translation>
-    </message>
-    <message>
-        <source>Wall passages</source>
-        <translation>Wanddurchstiche</translation>
-    </message>
-    <message>
-        <source>Entry angle</source>
-        <translation>Einstichwinkel</translation>
-    </message>
-    <message>
-        <source>Exit angle</source>
-        <translation>Ausstichwinkel</translation>
-    </message>
-    <message>
-        <source>Bite</source>
-        <translation>Stichabstand</translation>
-    </message>
-    <message>
-        <source>Bite in wall thicknesses</source>
-        <translation>Stichabstand in Wanddicken</translation>
-    </message>
-    <message>
-        <source>Full-thickness bites</source>
-        <translation>Stiche durch die ganze Wand</translation>
-    </message>
-    <message>
-        <source>Back-wall catches</source>
-        <translation>Hinterwand mitgefasst</translation>
-    </message>
-    <message>
-        <source>Stitches</source>
-        <translation>Nähte</translation>
-    </message>
-    <message>
-        <source>Bite symmetry</source>
-        <translation>Symmetrie der Stiche</translation>
-    </message>
-    <message>
-        <source>Stitch spacing</source>
-        <translation>Nahtabstand</translation>
-    </message>
-    <message>
-        <source>Triangulation error</source>
-        <translation>Triangulationsfehler</translation>
-    </message>
-    <message>
         <source>Take the same bite on both ends.</source>
         <translation>Stechen Sie an beiden Enden gleich weit vom Rand.</translation>
     </message>
@@ -1613,10 +1525,6 @@
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
-    </message>
-    <message>
-        <source>Needle off its arc</source>
-        <translation>Nadel außerhalb ihres Bogens</translation>
     </message>
     <message>
         <source>Pass each wall once: every extra passage injures it.</source>
@@ -1857,6 +1765,118 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Einstellungen gespeichert; der Löser gilt ab dem nächsten Versuch.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MetricVocabulary</name>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Weglänge</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Weglänge, linke Hand</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Weglänge, rechte Hand</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Bewegungen</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Laufruhe</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Leerlaufzeit</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Nachgriffe</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Fadenrisse</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Größte Gewebedehnung</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Gewebeschäden</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Wanddurchstiche</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Nadel außerhalb ihres Bogens</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Einstichwinkel</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ausstichwinkel</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Stichabstand</translation>
+    </message>
+    <message>
+        <source>Bite in wall thicknesses</source>
+        <translation>Stichabstand in Wanddicken</translation>
+    </message>
+    <message>
+        <source>Full-thickness passages</source>
+        <translation>Durchstiche durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Hinterwand gefasst</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Nähte</translation>
+    </message>
+    <message>
+        <source>Bite asymmetry</source>
+        <translation>Asymmetrie der Stiche</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Nahtabstand</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Triangulationsfehler</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position am Umfang</translation>
+    </message>
+    <message>
+        <source>Full thickness</source>
+        <translation>Ganze Wand</translation>
+    </message>
+    <message>
+        <source>Back wall</source>
+        <translation>Hinterwand</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>a label and its unit</comment>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -2448,94 +2468,6 @@ RMS-Fehler %7 mm, größter %8 mm
 <context>
     <name>microsim::gui::ReviewText</name>
     <message>
-        <source>Time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <source>Path length</source>
-        <translation>Weglänge</translation>
-    </message>
-    <message>
-        <source>Path length, left hand</source>
-        <translation>Weglänge, linke Hand</translation>
-    </message>
-    <message>
-        <source>Path length, right hand</source>
-        <translation>Weglänge, rechte Hand</translation>
-    </message>
-    <message>
-        <source>Movements</source>
-        <translation>Bewegungen</translation>
-    </message>
-    <message>
-        <source>Smoothness</source>
-        <translation>Laufruhe</translation>
-    </message>
-    <message>
-        <source>Idle time</source>
-        <translation>Leerlaufzeit</translation>
-    </message>
-    <message>
-        <source>Re-grasps</source>
-        <translation>Nachgriffe</translation>
-    </message>
-    <message>
-        <source>Suture breaks</source>
-        <translation>Fadenrisse</translation>
-    </message>
-    <message>
-        <source>Largest tissue stretch</source>
-        <translation>Größte Gewebedehnung</translation>
-    </message>
-    <message>
-        <source>Tissue damage</source>
-        <translation>Gewebeschäden</translation>
-    </message>
-    <message>
-        <source>Wall passages</source>
-        <translation>Wanddurchstiche</translation>
-    </message>
-    <message>
-        <source>Entry angle</source>
-        <translation>Einstichwinkel</translation>
-    </message>
-    <message>
-        <source>Exit angle</source>
-        <translation>Ausstichwinkel</translation>
-    </message>
-    <message>
-        <source>Bite</source>
-        <translation>Stichabstand</translation>
-    </message>
-    <message>
-        <source>Bite (wall thicknesses)</source>
-        <translation>Stichabstand (Wanddicken)</translation>
-    </message>
-    <message>
-        <source>Full-thickness passages</source>
-        <translation>Durchstiche durch die ganze Wand</translation>
-    </message>
-    <message>
-        <source>Back-wall catches</source>
-        <translation>Hinterwand gefasst</translation>
-    </message>
-    <message>
-        <source>Stitches</source>
-        <translation>Nähte</translation>
-    </message>
-    <message>
-        <source>Bite asymmetry</source>
-        <translation>Asymmetrie der Stiche</translation>
-    </message>
-    <message>
-        <source>Stitch spacing</source>
-        <translation>Nahtabstand</translation>
-    </message>
-    <message>
-        <source>Triangulation error</source>
-        <translation>Triangulationsfehler</translation>
-    </message>
-    <message>
         <source>Took longer than the target time.</source>
         <translation>Länger als die Zielzeit gebraucht.</translation>
     </message>
@@ -2648,44 +2580,8 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>Unterbrochen</translation>
     </message>
     <message>
-        <source>Time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
-    <message>
-        <source>Entry angle (°)</source>
-        <translation>Einstichwinkel (°)</translation>
-    </message>
-    <message>
-        <source>Exit angle (°)</source>
-        <translation>Ausstichwinkel (°)</translation>
-    </message>
-    <message>
-        <source>Bite (mm)</source>
-        <translation>Stichabstand (mm)</translation>
-    </message>
-    <message>
-        <source>Bite (walls)</source>
-        <translation>Stichabstand (Wände)</translation>
-    </message>
-    <message>
-        <source>Position (°)</source>
-        <translation>Position (°)</translation>
-    </message>
-    <message>
-        <source>Full thickness</source>
-        <translation>Ganze Wand</translation>
-    </message>
-    <message>
-        <source>Back wall</source>
-        <translation>Hinterwand</translation>
-    </message>
-    <message>
         <source>Abandoned</source>
         <translation>Aufgegeben</translation>
-    </message>
-    <message>
-        <source>Needle off its arc</source>
-        <translation>Nadel außerhalb ihres Bogens</translation>
     </message>
     <message>
         <source>The wall was passed more often than needed.</source>
@@ -2827,10 +2723,6 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>No finished attempts in this lesson yet.</source>
         <translation>Noch keine beendeten Versuche in dieser Lektion.</translation>
-    </message>
-    <message>
-        <source>%1 — not measured in this lesson</source>
-        <translation>%1 – in dieser Lektion nicht gemessen</translation>
     </message>
     <message>
         <source>yes</source>

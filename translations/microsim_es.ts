@@ -1419,94 +1419,6 @@
 <context>
     <name>microsim::gui::FeedbackText</name>
     <message>
-        <source>Time</source>
-        <translation>Tiempo</translation>
-    </message>
-    <message>
-        <source>Path length</source>
-        <translation>Longitud del recorrido</translation>
-    </message>
-    <message>
-        <source>Path length, left hand</source>
-        <translation>Longitud del recorrido, mano izquierda</translation>
-    </message>
-    <message>
-        <source>Path length, right hand</source>
-        <translation>Longitud del recorrido, mano derecha</translation>
-    </message>
-    <message>
-        <source>Movements</source>
-        <translation>Movimientos</translation>
-    </message>
-    <message>
-        <source>Smoothness</source>
-        <translation>Suavidad</translation>
-    </message>
-    <message>
-        <source>Idle time</source>
-        <translation>Tiempo inactivo</translation>
-    </message>
-    <message>
-        <source>Re-grasps</source>
-        <translation>Reagarres</translation>
-    </message>
-    <message>
-        <source>Suture breaks</source>
-        <translation>Roturas de sutura</translation>
-    </message>
-    <message>
-        <source>Largest tissue stretch</source>
-        <translation>Mayor estiramiento del tejido</translation>
-    </message>
-    <message>
-        <source>Tissue damage</source>
-        <translation>Daño tisular</translation>
-    </message>
-    <message>
-        <source>Wall passages</source>
-        <translation>Pasos por la pared</translation>
-    </message>
-    <message>
-        <source>Entry angle</source>
-        <translation>Ángulo de entrada</translation>
-    </message>
-    <message>
-        <source>Exit angle</source>
-        <translation>Ángulo de salida</translation>
-    </message>
-    <message>
-        <source>Bite</source>
-        <translation>Distancia del punto</translation>
-    </message>
-    <message>
-        <source>Bite in wall thicknesses</source>
-        <translation>Distancia del punto en grosores de pared</translation>
-    </message>
-    <message>
-        <source>Full-thickness bites</source>
-        <translation>Puntos de grosor completo</translation>
-    </message>
-    <message>
-        <source>Back-wall catches</source>
-        <translation>Pared posterior atrapada</translation>
-    </message>
-    <message>
-        <source>Stitches</source>
-        <translation>Puntos</translation>
-    </message>
-    <message>
-        <source>Bite symmetry</source>
-        <translation>Simetría de los puntos</translation>
-    </message>
-    <message>
-        <source>Stitch spacing</source>
-        <translation>Separación de los puntos</translation>
-    </message>
-    <message>
-        <source>Triangulation error</source>
-        <translation>Error de triangulación</translation>
-    </message>
-    <message>
         <source>Take the same bite on both ends.</source>
         <translation>Tome la misma distancia en ambos extremos.</translation>
     </message>
@@ -1613,10 +1525,6 @@
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
-    </message>
-    <message>
-        <source>Needle off its arc</source>
-        <translation>Aguja fuera de su arco</translation>
     </message>
     <message>
         <source>Pass each wall once: every extra passage injures it.</source>
@@ -1857,6 +1765,118 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Ajustes guardados; el resolutor se aplica desde el próximo intento.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MetricVocabulary</name>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Recorrido</translation>
+    </message>
+    <message>
+        <source>Path length, left hand</source>
+        <translation>Recorrido, mano izquierda</translation>
+    </message>
+    <message>
+        <source>Path length, right hand</source>
+        <translation>Recorrido, mano derecha</translation>
+    </message>
+    <message>
+        <source>Movements</source>
+        <translation>Movimientos</translation>
+    </message>
+    <message>
+        <source>Smoothness</source>
+        <translation>Suavidad</translation>
+    </message>
+    <message>
+        <source>Idle time</source>
+        <translation>Tiempo inactivo</translation>
+    </message>
+    <message>
+        <source>Re-grasps</source>
+        <translation>Reagarres</translation>
+    </message>
+    <message>
+        <source>Suture breaks</source>
+        <translation>Roturas del hilo</translation>
+    </message>
+    <message>
+        <source>Largest tissue stretch</source>
+        <translation>Mayor estiramiento del tejido</translation>
+    </message>
+    <message>
+        <source>Tissue damage</source>
+        <translation>Daño tisular</translation>
+    </message>
+    <message>
+        <source>Wall passages</source>
+        <translation>Pasos por la pared</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Aguja fuera de su arco</translation>
+    </message>
+    <message>
+        <source>Entry angle</source>
+        <translation>Ángulo de entrada</translation>
+    </message>
+    <message>
+        <source>Exit angle</source>
+        <translation>Ángulo de salida</translation>
+    </message>
+    <message>
+        <source>Bite</source>
+        <translation>Distancia al borde</translation>
+    </message>
+    <message>
+        <source>Bite in wall thicknesses</source>
+        <translation>Distancia del punto en grosores de pared</translation>
+    </message>
+    <message>
+        <source>Full-thickness passages</source>
+        <translation>Pasos de espesor completo</translation>
+    </message>
+    <message>
+        <source>Back-wall catches</source>
+        <translation>Pared posterior atrapada</translation>
+    </message>
+    <message>
+        <source>Stitches</source>
+        <translation>Puntos</translation>
+    </message>
+    <message>
+        <source>Bite asymmetry</source>
+        <translation>Asimetría de los pasos</translation>
+    </message>
+    <message>
+        <source>Stitch spacing</source>
+        <translation>Separación de los puntos</translation>
+    </message>
+    <message>
+        <source>Triangulation error</source>
+        <translation>Error de triangulación</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Posición en la circunferencia</translation>
+    </message>
+    <message>
+        <source>Full thickness</source>
+        <translation>Espesor completo</translation>
+    </message>
+    <message>
+        <source>Back wall</source>
+        <translation>Pared posterior</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>a label and its unit</comment>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -2448,94 +2468,6 @@ Error RMS %7 mm, máximo %8 mm
 <context>
     <name>microsim::gui::ReviewText</name>
     <message>
-        <source>Time</source>
-        <translation>Tiempo</translation>
-    </message>
-    <message>
-        <source>Path length</source>
-        <translation>Recorrido</translation>
-    </message>
-    <message>
-        <source>Path length, left hand</source>
-        <translation>Recorrido, mano izquierda</translation>
-    </message>
-    <message>
-        <source>Path length, right hand</source>
-        <translation>Recorrido, mano derecha</translation>
-    </message>
-    <message>
-        <source>Movements</source>
-        <translation>Movimientos</translation>
-    </message>
-    <message>
-        <source>Smoothness</source>
-        <translation>Suavidad</translation>
-    </message>
-    <message>
-        <source>Idle time</source>
-        <translation>Tiempo inactivo</translation>
-    </message>
-    <message>
-        <source>Re-grasps</source>
-        <translation>Reagarres</translation>
-    </message>
-    <message>
-        <source>Suture breaks</source>
-        <translation>Roturas del hilo</translation>
-    </message>
-    <message>
-        <source>Largest tissue stretch</source>
-        <translation>Mayor estiramiento del tejido</translation>
-    </message>
-    <message>
-        <source>Tissue damage</source>
-        <translation>Daño tisular</translation>
-    </message>
-    <message>
-        <source>Wall passages</source>
-        <translation>Pasos por la pared</translation>
-    </message>
-    <message>
-        <source>Entry angle</source>
-        <translation>Ángulo de entrada</translation>
-    </message>
-    <message>
-        <source>Exit angle</source>
-        <translation>Ángulo de salida</translation>
-    </message>
-    <message>
-        <source>Bite</source>
-        <translation>Distancia al borde</translation>
-    </message>
-    <message>
-        <source>Bite (wall thicknesses)</source>
-        <translation>Distancia al borde (grosores de pared)</translation>
-    </message>
-    <message>
-        <source>Full-thickness passages</source>
-        <translation>Pasos de espesor completo</translation>
-    </message>
-    <message>
-        <source>Back-wall catches</source>
-        <translation>Pared posterior atrapada</translation>
-    </message>
-    <message>
-        <source>Stitches</source>
-        <translation>Puntos</translation>
-    </message>
-    <message>
-        <source>Bite asymmetry</source>
-        <translation>Asimetría de los pasos</translation>
-    </message>
-    <message>
-        <source>Stitch spacing</source>
-        <translation>Separación de los puntos</translation>
-    </message>
-    <message>
-        <source>Triangulation error</source>
-        <translation>Error de triangulación</translation>
-    </message>
-    <message>
         <source>Took longer than the target time.</source>
         <translation>Tardó más que el tiempo objetivo.</translation>
     </message>
@@ -2648,44 +2580,8 @@ Error RMS %7 mm, máximo %8 mm
         <translation>Interrumpido</translation>
     </message>
     <message>
-        <source>Time (s)</source>
-        <translation>Tiempo (s)</translation>
-    </message>
-    <message>
-        <source>Entry angle (°)</source>
-        <translation>Ángulo de entrada (°)</translation>
-    </message>
-    <message>
-        <source>Exit angle (°)</source>
-        <translation>Ángulo de salida (°)</translation>
-    </message>
-    <message>
-        <source>Bite (mm)</source>
-        <translation>Distancia al borde (mm)</translation>
-    </message>
-    <message>
-        <source>Bite (walls)</source>
-        <translation>Distancia al borde (paredes)</translation>
-    </message>
-    <message>
-        <source>Position (°)</source>
-        <translation>Posición (°)</translation>
-    </message>
-    <message>
-        <source>Full thickness</source>
-        <translation>Espesor completo</translation>
-    </message>
-    <message>
-        <source>Back wall</source>
-        <translation>Pared posterior</translation>
-    </message>
-    <message>
         <source>Abandoned</source>
         <translation>Abandonado</translation>
-    </message>
-    <message>
-        <source>Needle off its arc</source>
-        <translation>Aguja fuera de su arco</translation>
     </message>
     <message>
         <source>The wall was passed more often than needed.</source>
@@ -2827,10 +2723,6 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>No finished attempts in this lesson yet.</source>
         <translation>Aún no hay intentos terminados en esta lección.</translation>
-    </message>
-    <message>
-        <source>%1 — not measured in this lesson</source>
-        <translation>%1 — no se mide en esta lección</translation>
     </message>
     <message>
         <source>yes</source>

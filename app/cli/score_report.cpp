@@ -1,6 +1,10 @@
 #include "cli/score_report.h"
 
+#include "microsim/assessment/scoring/pierce_fields.h"
+
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace microsim::cli {
 
@@ -82,19 +86,17 @@ nlohmann::json metricsJson(const as::AttemptScore& s) {
 
 nlohmann::json piercesJson(const as::AttemptScore& s) {
   nlohmann::json pierces = nlohmann::json::array();
-  for (const as::PierceMetrics& p : s.pierces)
-    pierces.push_back({{"time", p.time},
-                       {"vessel", p.vessel},
-                       {"end", p.end},
-                       {"entry_surface", surfaceKey(p.entrySurface)},
-                       {"exit_surface", surfaceKey(p.exitSurface)},
-                       {"entry_angle_deg", jsonNumber(p.entryAngleDeg)},
-                       {"exit_angle_deg", jsonNumber(p.exitAngleDeg)},
-                       {"bite_mm", jsonNumber(p.biteMm)},
-                       {"bite_walls", jsonNumber(p.biteWalls)},
-                       {"circumference_deg", jsonNumber(p.circumferenceDeg)},
-                       {"full_thickness", p.fullThickness},
-                       {"back_wall", p.backWall}});
+  for (const as::PierceMetrics& p : s.pierces) {
+    nlohmann::json pierce = {{"vessel", p.vessel},
+                             {"end", p.end},
+                             {"entry_surface", surfaceKey(p.entrySurface)},
+                             {"exit_surface", surfaceKey(p.exitSurface)}};
+    for (const as::PierceField& field : as::pierceFields()) {
+      const double v = field.value(p);
+      pierce[std::string(field.key)] = field.unit == "flag" ? nlohmann::json(v > 0.5) : jsonNumber(v);
+    }
+    pierces.push_back(std::move(pierce));
+  }
   return pierces;
 }
 

@@ -1,39 +1,11 @@
 #include "gui/pages/feedback_text.h"
 
+#include "gui/metric_vocabulary.h"
+
 #include <cmath>
 #include <map>
 
 namespace microsim::gui {
-
-QString FeedbackText::metricName(const std::string& key) {
-  static const std::map<std::string, const char*> names = {
-      {"time", QT_TR_NOOP("Time")},
-      {"path_length", QT_TR_NOOP("Path length")},
-      {"path_length_left", QT_TR_NOOP("Path length, left hand")},
-      {"path_length_right", QT_TR_NOOP("Path length, right hand")},
-      {"movements", QT_TR_NOOP("Movements")},
-      {"smoothness", QT_TR_NOOP("Smoothness")},
-      {"idle_time", QT_TR_NOOP("Idle time")},
-      {"regrasps", QT_TR_NOOP("Re-grasps")},
-      {"suture_breaks", QT_TR_NOOP("Suture breaks")},
-      {"max_stretch", QT_TR_NOOP("Largest tissue stretch")},
-      {"tissue_damage", QT_TR_NOOP("Tissue damage")},
-      {"passages", QT_TR_NOOP("Wall passages")},
-      {"arc_deviation", QT_TR_NOOP("Needle off its arc")},
-      {"entry_angle", QT_TR_NOOP("Entry angle")},
-      {"exit_angle", QT_TR_NOOP("Exit angle")},
-      {"bite", QT_TR_NOOP("Bite")},
-      {"bite_walls", QT_TR_NOOP("Bite in wall thicknesses")},
-      {"full_thickness", QT_TR_NOOP("Full-thickness bites")},
-      {"back_wall_catches", QT_TR_NOOP("Back-wall catches")},
-      {"stitches", QT_TR_NOOP("Stitches")},
-      {"bite_symmetry", QT_TR_NOOP("Bite symmetry")},
-      {"spacing", QT_TR_NOOP("Stitch spacing")},
-      {"triangulation_error", QT_TR_NOOP("Triangulation error")},
-  };
-  const auto it = names.find(key);
-  return it == names.end() ? QString::fromStdString(key) : tr(it->second);
-}
 
 QString FeedbackText::advice(const std::string& key) {
   static const std::map<std::string, const char*> advice = {
@@ -67,11 +39,11 @@ QString FeedbackText::advice(const std::string& key) {
   const std::size_t dot = key.rfind('.');
   const std::string metric = key.substr(0, dot);
   const std::string kind = dot == std::string::npos ? std::string() : key.substr(dot + 1);
-  if (kind == "missing") return tr("%1: not measured in this attempt.").arg(metricName(metric));
+  if (kind == "missing") return tr("%1: not measured in this attempt.").arg(MetricVocabulary::metricLabel(metric));
   if (kind == "not_applicable")
-    return tr("%1: not applicable to this input; not counted.").arg(metricName(metric));
-  if (kind == "too_high") return tr("%1 is too high.").arg(metricName(metric));
-  if (kind == "too_low") return tr("%1 is too low.").arg(metricName(metric));
+    return tr("%1: not applicable to this input; not counted.").arg(MetricVocabulary::metricLabel(metric));
+  if (kind == "too_high") return tr("%1 is too high.").arg(MetricVocabulary::metricLabel(metric));
+  if (kind == "too_low") return tr("%1 is too low.").arg(MetricVocabulary::metricLabel(metric));
   return QString::fromStdString(key);
 }
 

@@ -1,5 +1,6 @@
 #include "gui/pages/results_page.h"
 
+#include "gui/metric_vocabulary.h"
 #include "gui/pages/feedback_text.h"
 #include "gui/pages/pierce_image.h"
 #include "gui/settings/tunables.h"
@@ -94,7 +95,7 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
   for (std::size_t i = 0; i < s.metrics.size(); ++i) {
     const assessment::MetricScore& m = s.metrics[i];
     const int row = static_cast<int>(i);
-    metrics_->setItem(row, 0, new QTableWidgetItem(FeedbackText::metricName(m.key)));
+    metrics_->setItem(row, 0, new QTableWidgetItem(MetricVocabulary::metricLabel(m.key)));
     metrics_->setItem(row, 1, new QTableWidgetItem(tr("%1 (target %2)").arg(
                                   FeedbackText::value(m.value, m.unit, units), FeedbackText::value(m.target, m.unit, units))));
     metrics_->setItem(row, 2, new QTableWidgetItem(QStringLiteral("%1 %").arg(m.points * 100.0, 0, 'f', 0)));

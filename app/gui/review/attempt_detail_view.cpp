@@ -1,9 +1,11 @@
 #include "gui/review/attempt_detail_view.h"
 
+#include "gui/metric_vocabulary.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_data.h"
 #include "gui/review/review_text.h"
 #include "gui/viewport.h"
+#include "microsim/assessment/scoring/pierce_fields.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -36,14 +38,6 @@ void set(QTableWidget* table, int row, int column, const QString& text) {
   table->setItem(row, column, new QTableWidgetItem(text));
 }
 
-// the stored per-pierce values shown, in column order
-const QStringList& pierceColumns() {
-  static const QStringList keys = {QStringLiteral("time_s"),           QStringLiteral("entry_angle_deg"),
-                                   QStringLiteral("exit_angle_deg"),   QStringLiteral("bite_mm"),
-                                   QStringLiteral("bite_walls"),       QStringLiteral("circumference_deg"),
-                                   QStringLiteral("full_thickness"),   QStringLiteral("back_wall")};
-  return keys;
-}
 
 }  // namespace
 
@@ -58,7 +52,8 @@ AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
   metrics_ = makeTable({tr("Metric"), tr("Value"), tr("Target"), tr("Tolerance"), tr("Weight"), tr("Points"),
                         tr("Feedback")});
   QStringList pierceHeaders{tr("Pierce")};
-  for (const QString& key : pierceColumns()) pierceHeaders << ReviewText::pierceValueName(key);
+  for (const assessment::PierceField& field : assessment::pierceFields())
+    pierceHeaders << MetricVocabulary::pierceFieldTitle(field.key);
   pierces_ = makeTable(pierceHeaders);
 
   annotations_ = new QListWidget;
@@ -182,7 +177,7 @@ void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
   metrics_->setRowCount(int(detail.metrics.size()));
   for (int row = 0; row < detail.metrics.size(); ++row) {
     const assessment::StoredMetric& m = detail.metrics[row];
-    set(metrics_, row, 0, ReviewText::metricName(m.key));
+    set(metrics_, row, 0, MetricVocabulary::metricLabel(m.key));
     set(metrics_, row, 1, ReviewText::value(m.value, m.unit, 2));
     set(metrics_, row, 2, ReviewText::value(m.target, m.unit, 2));
     set(metrics_, row, 3, QStringLiteral("± ") + ReviewText::value(m.tolerance, m.unit, 2));
@@ -204,15 +199,16 @@ void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
   const QLocale locale;
   for (int r = 0; r < int(rows.size()); ++r) {
     set(pierces_, r, 0, QString::number(rows[r].pierce + 1));
-    for (int c = 0; c < pierceColumns().size(); ++c) {
-      const QString& key = pierceColumns()[c];
-      const double v = rows[r].values.value(key, std::nan(""));
+    int column = 1;
+    for (const assessment::PierceField& field : assessment::pierceFields()) {
+      const double v = rows[r].values.value(QString::fromUtf8(field.key.data(), qsizetype(field.key.size())), std::nan(""));
       QString text;
-      if (key == QStringLiteral("full_thickness") || key == QStringLiteral("back_wall"))
+      if (field.unit == "flag")
         text = std::isnan(v) ? QStringLiteral("–") : (v > 0.5 ? tr("yes") : tr("no"));
       else
-        text = std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', key == QStringLiteral("bite_walls") ? 2 : 1);
-      set(pierces_, r, c + 1, text);
+        // wall thicknesses are fractions near 2: one decimal would hide the difference
+        text = std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', field.unit == "1" ? 2 : 1);
+      set(pierces_, r, column++, text);
     }
   }
   pierces_->resizeColumnsToContents();

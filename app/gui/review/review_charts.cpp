@@ -1,6 +1,6 @@
 #include "gui/review/review_charts.h"
 
-#include "gui/review/review_text.h"
+#include "gui/metric_vocabulary.h"
 
 #include <QAreaSeries>
 #include <QChart>
@@ -9,6 +9,8 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace microsim::gui {
 namespace {
@@ -68,7 +70,7 @@ QChart* ReviewCharts::scoreChart(const QList<double>& scores, std::optional<doub
 QChart* ReviewCharts::metricChart(const QString& title, const QString& unit, const QList<QPointF>& points,
                                   std::optional<TargetBand> band, int attemptCount) {
   auto* chart = new QChart;
-  const QString symbol = ReviewText::unitSymbol(unit);
+  const QString symbol = MetricVocabulary::unitSymbol(unit.toStdString());
   chart->setTitle(symbol.isEmpty() ? title : tr("%1 (%2)").arg(title, symbol));
   chart->legend()->hide();
   auto* x = attemptAxis(attemptCount);
@@ -76,31 +78,45 @@ QChart* ReviewCharts::metricChart(const QString& title, const QString& unit, con
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
 
-  // the y range holds every value and the whole band, with a margin
-  double low = band ? band->low : 0.0;
-  double high = band ? band->high : 1.0;
-  if (!band && !points.isEmpty()) low = high = points.front().y();
-  for (const QPointF& p : points) {
-    low = std::min(low, p.y());
-    high = std::max(high, p.y());
+  // the y range holds every value and the band's finite ends, with a margin
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  const auto include = [&low, &high](double v) {
+    if (!std::isfinite(v)) return;
+    low = std::min(low, v);
+    high = std::max(high, v);
+  };
+  for (const QPointF& p : points) include(p.y());
+  if (band) {
+    include(band->low);
+    include(band->high);
+  }
+  if (low > high) {  // nothing to show: a unit range
+    low = 0.0;
+    high = 1.0;
   }
   const double margin = std::max(0.1 * (high - low), 1e-3 + 0.05 * std::abs(high));
   y->setRange(low - margin, high + margin);
 
   if (band) {
+    // an open end (the side that is never bad) runs to the edge of the chart
+    const double bandLow = std::max(band->low, y->min());
+    const double bandHigh = std::min(band->high, y->max());
     auto* upper = new QLineSeries;
     auto* lower = new QLineSeries;
-    upper->append(x->min(), band->high);
-    upper->append(x->max(), band->high);
-    lower->append(x->min(), band->low);
-    lower->append(x->max(), band->low);
+    upper->append(x->min(), bandHigh);
+    upper->append(x->max(), bandHigh);
+    lower->append(x->min(), bandLow);
+    lower->append(x->max(), bandLow);
     auto* area = new QAreaSeries(upper, lower);
+    area->setObjectName(QString::fromLatin1(kTargetBandSeriesName));
     area->setName(tr("Target"));
     area->setColor(QColor(120, 200, 120, 90));
     area->setBorderColor(QColor(80, 160, 80));
     attach(chart, area, x, y);
   }
   auto* series = new QLineSeries;
+  series->setObjectName(QString::fromLatin1(kMetricSeriesName));
   series->setName(title);
   series->setPointsVisible(true);
   for (const QPointF& p : points) series->append(p);

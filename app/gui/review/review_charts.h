@@ -21,6 +21,8 @@ namespace microsim::gui {
 /// Object names of the series, for tests and styling.
 inline constexpr char kScoreSeriesName[] = "scoreSeries";
 inline constexpr char kPassMarkSeriesName[] = "passMarkSeries";
+inline constexpr char kMetricSeriesName[] = "metricSeries";
+inline constexpr char kTargetBandSeriesName[] = "targetBandSeries";
 
 class ReviewCharts {
   Q_DECLARE_TR_FUNCTIONS(microsim::gui::ReviewCharts)
@@ -30,7 +32,7 @@ class ReviewCharts {
   static QChart* scoreChart(const QList<double>& scores, std::optional<double> passMark);
 
   /// `points` are (attempt number, value in `unit`); `band` shades the values with full
-  /// points. The caller owns the chart.
+  /// points, an open end up to the chart's edge. The caller owns the chart.
   static QChart* metricChart(const QString& title, const QString& unit, const QList<QPointF>& points,
                              std::optional<TargetBand> band, int attemptCount);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 namespace microsim::gui {
@@ -100,8 +101,10 @@ std::optional<TargetBand> targetBand(const assessment::Rubric& rubric, const QSt
   for (const assessment::RubricMetric& m : rubric.metrics) {
     if (m.key != k) continue;
     switch (m.bad) {
-      case assessment::BadSide::Above: return TargetBand{m.target, m.target + m.tolerance};
-      case assessment::BadSide::Below: return TargetBand{m.target - m.tolerance, m.target};
+      case assessment::BadSide::Above:
+        return TargetBand{-std::numeric_limits<double>::infinity(), m.target + m.tolerance};
+      case assessment::BadSide::Below:
+        return TargetBand{m.target - m.tolerance, std::numeric_limits<double>::infinity()};
       case assessment::BadSide::Both: return TargetBand{m.target - m.tolerance, m.target + m.tolerance};
     }
   }

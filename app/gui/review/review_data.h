@@ -78,12 +78,17 @@ std::vector<GridRow> buildGrid(const QList<assessment::Trainee>& people,
 QList<assessment::AttemptSummary> finishedAttempts(const QList<assessment::AttemptSummary>& attempts,
                                                    qint64 traineeId, const QString& lesson = {});
 
+/// The values that score full points. A metric whose only bad side is "too high" (time, path)
+/// has no lower end (low = −∞), one whose only bad side is "too low" no upper end (high = +∞).
 struct TargetBand {
   double low = 0;
   double high = 0;
+
+  bool contains(double value) const { return value >= low && value <= high; }
 };
 
-/// The band of full points of `key` in `rubric`; nullopt when the rubric does not weigh it.
+/// The band of full points of `key` in `rubric`, open on the side that is never bad; nullopt
+/// when the rubric does not weigh it.
 std::optional<TargetBand> targetBand(const assessment::Rubric& rubric, const QString& key);
 
 /// The metrics the history charts follow, in display order.

@@ -1,47 +1,13 @@
 #include "gui/review/review_text.h"
 
+#include "gui/metric_vocabulary.h"
+
 #include <QHash>
 #include <QLocale>
 
 #include <cmath>
 
 namespace microsim::gui {
-
-QString ReviewText::metricName(const QString& key) {
-  static const QHash<QString, const char*> names = {
-      {QStringLiteral("time"), QT_TR_NOOP("Time")},
-      {QStringLiteral("path_length"), QT_TR_NOOP("Path length")},
-      {QStringLiteral("path_length_left"), QT_TR_NOOP("Path length, left hand")},
-      {QStringLiteral("path_length_right"), QT_TR_NOOP("Path length, right hand")},
-      {QStringLiteral("movements"), QT_TR_NOOP("Movements")},
-      {QStringLiteral("smoothness"), QT_TR_NOOP("Smoothness")},
-      {QStringLiteral("idle_time"), QT_TR_NOOP("Idle time")},
-      {QStringLiteral("regrasps"), QT_TR_NOOP("Re-grasps")},
-      {QStringLiteral("suture_breaks"), QT_TR_NOOP("Suture breaks")},
-      {QStringLiteral("max_stretch"), QT_TR_NOOP("Largest tissue stretch")},
-      {QStringLiteral("tissue_damage"), QT_TR_NOOP("Tissue damage")},
-      {QStringLiteral("passages"), QT_TR_NOOP("Wall passages")},
-      {QStringLiteral("arc_deviation"), QT_TR_NOOP("Needle off its arc")},
-      {QStringLiteral("entry_angle"), QT_TR_NOOP("Entry angle")},
-      {QStringLiteral("exit_angle"), QT_TR_NOOP("Exit angle")},
-      {QStringLiteral("bite"), QT_TR_NOOP("Bite")},
-      {QStringLiteral("bite_walls"), QT_TR_NOOP("Bite (wall thicknesses)")},
-      {QStringLiteral("full_thickness"), QT_TR_NOOP("Full-thickness passages")},
-      {QStringLiteral("back_wall_catches"), QT_TR_NOOP("Back-wall catches")},
-      {QStringLiteral("stitches"), QT_TR_NOOP("Stitches")},
-      {QStringLiteral("bite_symmetry"), QT_TR_NOOP("Bite asymmetry")},
-      {QStringLiteral("spacing"), QT_TR_NOOP("Stitch spacing")},
-      {QStringLiteral("triangulation_error"), QT_TR_NOOP("Triangulation error")},
-  };
-  auto it = names.constFind(key);
-  return it == names.cend() ? key : tr(it.value());
-}
-
-QString ReviewText::unitSymbol(const QString& unit) {
-  if (unit == QStringLiteral("deg")) return QStringLiteral("°");
-  if (unit == QStringLiteral("count") || unit == QStringLiteral("1")) return {};
-  return unit;
-}
 
 QString ReviewText::feedback(const QString& key) {
   static const QHash<QString, const char*> sentences = {
@@ -74,7 +40,7 @@ QString ReviewText::feedback(const QString& key) {
   if (it != sentences.cend()) return tr(it.value());
   // the scoring's default keys: "<metric>.missing", "<metric>.not_applicable",
   // "<metric>.too_high", "<metric>.too_low"
-  const QString metric = metricName(key.section(QLatin1Char('.'), 0, 0));
+  const QString metric = MetricVocabulary::metricLabel(key.section(QLatin1Char('.'), 0, 0));
   const QString kind = key.section(QLatin1Char('.'), 1);
   if (kind == QStringLiteral("missing")) return tr("%1: not measured in this attempt.").arg(metric);
   if (kind == QStringLiteral("not_applicable"))
@@ -98,25 +64,10 @@ QString ReviewText::status(assessment::AttemptStatus status) {
   return {};
 }
 
-QString ReviewText::pierceValueName(const QString& key) {
-  static const QHash<QString, const char*> names = {
-      {QStringLiteral("time_s"), QT_TR_NOOP("Time (s)")},
-      {QStringLiteral("entry_angle_deg"), QT_TR_NOOP("Entry angle (°)")},
-      {QStringLiteral("exit_angle_deg"), QT_TR_NOOP("Exit angle (°)")},
-      {QStringLiteral("bite_mm"), QT_TR_NOOP("Bite (mm)")},
-      {QStringLiteral("bite_walls"), QT_TR_NOOP("Bite (walls)")},
-      {QStringLiteral("circumference_deg"), QT_TR_NOOP("Position (°)")},
-      {QStringLiteral("full_thickness"), QT_TR_NOOP("Full thickness")},
-      {QStringLiteral("back_wall"), QT_TR_NOOP("Back wall")},
-  };
-  auto it = names.constFind(key);
-  return it == names.cend() ? key : tr(it.value());
-}
-
 QString ReviewText::value(double value, const QString& unit, int decimals) {
   if (std::isnan(value)) return QStringLiteral("–");
   QString number = QLocale().toString(value, 'f', decimals);
-  const QString symbol = unitSymbol(unit);
+  const QString symbol = MetricVocabulary::unitSymbol(unit.toStdString());
   if (symbol.isEmpty()) return number;
   if (symbol == QStringLiteral("°")) return number + symbol;
   return number + QLatin1Char(' ') + symbol;

@@ -1,8 +1,8 @@
 #include "gui/review/trainee_history_view.h"
 
+#include "gui/metric_vocabulary.h"
 #include "gui/review/review_charts.h"
 #include "gui/review/review_text.h"
-#include "microsim/assessment/scoring/metrics.h"
 
 #include <QChart>
 #include <QChartView>
@@ -43,15 +43,9 @@ QTableWidgetItem* item(const QString& text, qint64 attemptId) {
 TraineeHistoryView::TraineeHistoryView(QWidget* parent) : QWidget(parent) {
   scoreView_ = makeView();
   auto* charts = new QWidget;
-  auto* grid = new QGridLayout(charts);
-  grid->setContentsMargins(0, 0, 0, 0);
-  grid->addWidget(scoreView_, 0, 0, 1, 2);
-  const QStringList keys = keyMetrics();
-  for (int i = 0; i < keys.size(); ++i) {
-    QChartView* view = makeView();
-    metricViews_ << view;
-    grid->addWidget(view, 1 + i / 2, i % 2);
-  }
+  chartGrid_ = new QGridLayout(charts);
+  chartGrid_->setContentsMargins(0, 0, 0, 0);
+  chartGrid_->addWidget(scoreView_, 0, 0, 1, 2);
 
   table_ = new QTableWidget(0, 5);
   table_->setHorizontalHeaderLabels({tr("Attempt"), tr("Finished"), tr("Mode"), tr("Score"), tr("Passed")});
@@ -89,19 +83,25 @@ void TraineeHistoryView::setHistory(const QList<assessment::AttemptSummary>& fin
   replaceChart(scoreView_, ReviewCharts::scoreChart(
                                scores, rubric ? std::optional<double>(rubric->passMark) : std::nullopt));
 
-  // one chart per key metric: its stored value in each attempt that has it
-  const QStringList keys = keyMetrics();
-  for (int k = 0; k < keys.size(); ++k) {
+  // one chart per key metric measured in these attempts: its stored value in each that has
+  // it (a metric the lesson never measures would only be an empty chart)
+  qDeleteAll(metricViews_);
+  metricViews_.clear();
+  for (const QString& key : keyMetrics()) {
     QList<QPointF> points;
     for (int i = 0; i < count && i < metrics.size(); ++i) {
-      if (auto v = metricValue(metrics[i], keys[k])) points << QPointF(i + 1, *v);
+      if (auto v = metricValue(metrics[i], key)) points << QPointF(i + 1, *v);
     }
-    const assessment::MetricInfo* info = assessment::findMetric(keys[k].toStdString());
-    const QString unit = info ? QString::fromUtf8(info->unit.data(), qsizetype(info->unit.size())) : QString();
-    const std::optional<TargetBand> band = rubric ? targetBand(*rubric, keys[k]) : std::nullopt;
-    QString title = ReviewText::metricName(keys[k]);
-    if (points.isEmpty()) title = tr("%1 — not measured in this lesson").arg(title);
-    replaceChart(metricViews_[k], ReviewCharts::metricChart(title, unit, points, band, count));
+    if (points.isEmpty()) continue;
+    const std::optional<TargetBand> band = rubric ? targetBand(*rubric, key) : std::nullopt;
+    QChart* chart = ReviewCharts::metricChart(MetricVocabulary::metricLabel(key), MetricVocabulary::metricUnit(key),
+                                              points, band, count);
+    chart->setObjectName(key);
+    QChartView* view = makeView();
+    replaceChart(view, chart);
+    const int slot = int(metricViews_.size());
+    chartGrid_->addWidget(view, 1 + slot / 2, slot % 2);
+    metricViews_ << view;
   }
 
   // newest first in the table, as an instructor reads it

@@ -1,6 +1,7 @@
 #pragma once
-// A trainee's history in one lesson: the score chart, the key metrics' charts with their
-// target bands, and the table of finished attempts (choosing a row opens that attempt).
+// A trainee's history in one lesson: the score chart, the charts of the key metrics measured
+// in these attempts with their target bands, and the table of finished attempts (choosing a
+// row opens that attempt).
 
 #include "gui/review/review_data.h"
 
@@ -9,6 +10,7 @@
 
 class QChart;
 class QChartView;
+class QGridLayout;
 class QLabel;
 class QTableWidget;
 
@@ -27,7 +29,8 @@ class TraineeHistoryView : public QWidget {
                   const QList<QList<assessment::StoredMetric>>& metrics, const assessment::Rubric* rubric);
 
   QChart* scoreChart() const;
-  /// The key metrics' charts, in keyMetrics() order.
+  /// The charts of the key metrics measured in the shown attempts, in keyMetrics() order;
+  /// each chart's object name is its metric key.
   QList<QChart*> metricCharts() const;
   QTableWidget* attemptsTable() const { return table_; }
   /// The score chart's view, to render it elsewhere (the PDF report).
@@ -38,6 +41,7 @@ class TraineeHistoryView : public QWidget {
 
  private:
   QChartView* scoreView_ = nullptr;
+  QGridLayout* chartGrid_ = nullptr;
   QList<QChartView*> metricViews_;
   QTableWidget* table_ = nullptr;
   QLabel* emptyLabel_ = nullptr;

@@ -1,9 +1,8 @@
 #include "microsim/assessment/scoring/rubric.h"
 
 #include "microsim/assessment/scoring/metrics.h"
+#include "microsim/sim/scene/json_location.h"
 #include "microsim/sim/scene/spring_scene.h"
-#include "scene/scene_json_reader.h"
-#include "scene/spring_scene_locate.h"
 
 #include <nlohmann/json.hpp>
 
@@ -193,7 +192,7 @@ class RubricReader {
 RubricError located(RubricError e, std::string_view text) {
   sim::SceneError probe;
   probe.field = e.field;
-  sim::detail::locateSceneError(probe, text);
+  sim::locateSceneError(probe, text);
   e.line = probe.line;
   e.column = probe.column;
   return e;
@@ -216,7 +215,7 @@ std::variant<Rubric, RubricError> parseRubric(std::string_view text, const std::
   } catch (const json::parse_error& e) {
     return atOffset(K::MalformedJson, file, text, e.byte > 0 ? e.byte - 1 : 0);
   } catch (const json::out_of_range&) {
-    const auto hit = sim::detail::findOverflowingNumber(text);
+    const auto hit = sim::findOverflowingNumber(text);
     return atOffset(K::InvalidValue, file, text, hit ? hit->offset : 0, hit ? hit->path : "");
   } catch (const std::exception&) {
     return atOffset(K::MalformedJson, file, text, 0);

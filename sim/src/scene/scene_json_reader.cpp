@@ -1,6 +1,6 @@
 #include "scene/scene_json_reader.h"
 
-#include "scene/spring_scene_locate.h"
+#include "microsim/sim/scene/json_location.h"
 
 #include <algorithm>
 #include <climits>
@@ -171,18 +171,6 @@ bool JsonReader::optVec3(const json& obj, const std::string& path, std::string_v
                          Vec3& out) {
   const json* v = field(obj, name);
   return !v || vec3(*v, key(path, name), out);
-}
-
-void locateSceneError(SceneError& e, std::string_view text) {
-  std::string path = e.field;
-  std::optional<std::size_t> offset = locateJsonPath(text, path);
-  while (!offset && !path.empty()) {
-    const std::size_t cut = path.find_last_of(".[");
-    path.resize(cut == std::string::npos ? 0 : cut);
-    offset = locateJsonPath(text, path);
-  }
-  e.offset = std::min(offset.value_or(0), text.size());
-  std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
 }
 
 SceneError sceneErrorAt(SceneErrorKind kind, const std::string& file, std::string_view text,

@@ -6,6 +6,7 @@
 
 #include "microsim/sim/mesh/spring_model.h"
 #include "microsim/sim/mesh/vessel.h"
+#include "microsim/sim/scene/json_location.h"
 #include "microsim/sim/scene/spring_scene.h"
 
 #include <nlohmann/json.hpp>
@@ -75,10 +76,6 @@ class JsonReader {
  private:
   std::optional<SceneError> error_;
 };
-
-/// Fills e.offset/line/column from e.field: the value at the path in `text`, or at its
-/// nearest enclosing value that can be found.
-void locateSceneError(SceneError& e, std::string_view text);
 
 /// A SceneError of `kind` in `file` at byte `offset` of `text` (line and column filled).
 SceneError sceneErrorAt(SceneErrorKind kind, const std::string& file, std::string_view text,

@@ -3,7 +3,7 @@
 #include "microsim/sim/mesh/lattice.h"
 #include "microsim/sim/mesh/tetra_lattice.h"
 #include "microsim/sim/mesh/vessel.h"
-#include "scene/spring_scene_locate.h"
+#include "microsim/sim/scene/json_location.h"
 
 #include <gtest/gtest.h>
 
@@ -300,11 +300,11 @@ TEST(SpringScene, SurfaceMeshFailureCarriesTheImporterError) {
 
 TEST(SpringScene, LocateJsonPath) {
   const std::string text = R"({"a": [1, {"b": "x\"y", "c": [[], [5]]}], "d": {}})";
-  EXPECT_EQ(detail::locateJsonPath(text, ""), 0u);
-  EXPECT_EQ(detail::locateJsonPath(text, "a"), text.find('['));
-  EXPECT_EQ(detail::locateJsonPath(text, "a[1].c[1][0]"), text.find('5'));
-  EXPECT_EQ(detail::locateJsonPath(text, "d"), text.rfind('{'));
-  EXPECT_FALSE(detail::locateJsonPath(text, "a[2]").has_value());
+  EXPECT_EQ(locateJsonPath(text, ""), 0u);
+  EXPECT_EQ(locateJsonPath(text, "a"), text.find('['));
+  EXPECT_EQ(locateJsonPath(text, "a[1].c[1][0]"), text.find('5'));
+  EXPECT_EQ(locateJsonPath(text, "d"), text.rfind('{'));
+  EXPECT_FALSE(locateJsonPath(text, "a[2]").has_value());
   EXPECT_EQ(lineColumnAt("ab\ncd", 4), std::make_pair(2, 2));
 }
 

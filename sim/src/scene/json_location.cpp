@@ -1,10 +1,12 @@
-#include "scene/spring_scene_locate.h"
+#include "microsim/sim/scene/json_location.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <tuple>
 
-namespace microsim::sim::detail {
+namespace microsim::sim {
 
 namespace {
 
@@ -128,4 +130,16 @@ std::optional<JsonHit> findOverflowingNumber(std::string_view text) {
   return JsonHit{*offset, scanner.path()};
 }
 
-}  // namespace microsim::sim::detail
+void locateSceneError(SceneError& e, std::string_view text) {
+  std::string path = e.field;
+  std::optional<std::size_t> offset = locateJsonPath(text, path);
+  while (!offset && !path.empty()) {
+    const std::size_t cut = path.find_last_of(".[");
+    path.resize(cut == std::string::npos ? 0 : cut);
+    offset = locateJsonPath(text, path);
+  }
+  e.offset = std::min(offset.value_or(0), text.size());
+  std::tie(e.line, e.column) = lineColumnAt(text, e.offset);
+}
+
+}  // namespace microsim::sim

@@ -1,0 +1,114 @@
+// The history's metric charts: the green band is where a metric scores full points, whichever
+// side is bad, and a metric the shown attempts never measured gets no chart.
+#include "gui/review/review_charts.h"
+
+#include "gui/review/trainee_history_view.h"
+
+#include <QAreaSeries>
+#include <QChart>
+#include <QLineSeries>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <utility>
+
+namespace microsim::gui {
+namespace {
+
+QAbstractSeries* seriesNamed(QChart* chart, const char* name) {
+  for (QAbstractSeries* s : chart->series())
+    if (s->objectName() == QLatin1String(name)) return s;
+  return nullptr;
+}
+
+// the band's lower and upper edge as drawn at x
+std::pair<double, double> drawnBandAt(QChart* chart, double x) {
+  auto* area = qobject_cast<QAreaSeries*>(seriesNamed(chart, kTargetBandSeriesName));
+  EXPECT_NE(area, nullptr);
+  if (!area) return {0.0, 0.0};
+  const auto edgeAt = [x](const QLineSeries* edge) {
+    const QPointF a = edge->at(0);
+    const QPointF b = edge->at(edge->count() - 1);
+    return a.y() + (b.y() - a.y()) * (x - a.x()) / (b.x() - a.x());
+  };
+  return {edgeAt(area->lowerSeries()), edgeAt(area->upperSeries())};
+}
+
+assessment::Rubric rubricWith(const char* key, double target, double tolerance, assessment::BadSide bad) {
+  assessment::Rubric rubric;
+  assessment::RubricMetric m;
+  m.key = key;
+  m.target = target;
+  m.tolerance = tolerance;
+  m.limit = 2.0 * tolerance;
+  m.bad = bad;
+  rubric.metrics.push_back(m);
+  return rubric;
+}
+
+TEST(ReviewCharts, AFastTimeLiesInsideTheBandAndASlowOneOutside) {
+  // time: only "too slow" is bad, so 120 s against a 300 ± 60 s target scores full points
+  const assessment::Rubric rubric = rubricWith("time", 300.0, 60.0, assessment::BadSide::Above);
+  const std::optional<TargetBand> band = targetBand(rubric, QStringLiteral("time"));
+  ASSERT_TRUE(band.has_value());
+  EXPECT_TRUE(band->contains(120.0));
+  EXPECT_TRUE(band->contains(360.0));
+  EXPECT_FALSE(band->contains(420.0));
+
+  std::unique_ptr<QChart> chart(ReviewCharts::metricChart(QStringLiteral("Time"), QStringLiteral("s"),
+                                                          {QPointF(1, 120.0), QPointF(2, 420.0)}, band, 2));
+  const auto [low1, high1] = drawnBandAt(chart.get(), 1.0);
+  EXPECT_LE(low1, 120.0);
+  EXPECT_GE(high1, 120.0);
+  const auto [low2, high2] = drawnBandAt(chart.get(), 2.0);
+  EXPECT_GT(420.0, high2);
+  EXPECT_DOUBLE_EQ(high2, 360.0);
+}
+
+TEST(ReviewCharts, AMetricGoodWhenHighHasTheBandAboveItsTarget) {
+  const assessment::Rubric rubric = rubricWith("full_thickness", 0.9, 0.1, assessment::BadSide::Below);
+  const std::optional<TargetBand> band = targetBand(rubric, QStringLiteral("full_thickness"));
+  ASSERT_TRUE(band.has_value());
+  std::unique_ptr<QChart> chart(
+      ReviewCharts::metricChart(QStringLiteral("Full-thickness passages"), QStringLiteral("1"),
+                                {QPointF(1, 1.0), QPointF(2, 0.5)}, band, 2));
+  const auto [low, high] = drawnBandAt(chart.get(), 1.0);
+  EXPECT_DOUBLE_EQ(low, 0.8);
+  EXPECT_GE(high, 1.0);
+  EXPECT_LT(0.5, low);
+}
+
+TEST(ReviewCharts, AMetricNeverMeasuredInTheShownAttemptsHasNoChart) {
+  QList<assessment::AttemptSummary> finished(2);
+  finished[0].id = 1;
+  finished[1].id = 2;
+  // both attempts measured time; neither measured an entry angle (no pierce in the lesson)
+  QList<QList<assessment::StoredMetric>> metrics(2);
+  for (int i = 0; i < 2; ++i) {
+    assessment::StoredMetric time;
+    time.key = QStringLiteral("time");
+    time.value = 100.0 + i;
+    assessment::StoredMetric angle;
+    angle.key = QStringLiteral("entry_angle");
+    angle.value = std::nan("");
+    metrics[i] << time << angle;
+  }
+  const assessment::Rubric rubric = rubricWith("time", 300.0, 60.0, assessment::BadSide::Above);
+  TraineeHistoryView view;
+  view.setHistory(finished, metrics, &rubric);
+  const QList<QChart*> charts = view.metricCharts();
+  ASSERT_EQ(charts.size(), 1);
+  EXPECT_EQ(charts[0]->objectName(), QStringLiteral("time"));
+  auto* values = qobject_cast<QLineSeries*>(seriesNamed(charts[0], kMetricSeriesName));
+  ASSERT_NE(values, nullptr);
+  EXPECT_EQ(values->count(), 2);
+
+  // shown again with no attempts at all: no metric charts remain
+  view.setHistory({}, {}, &rubric);
+  EXPECT_TRUE(view.metricCharts().isEmpty());
+}
+
+}  // namespace
+}  // namespace microsim::gui
