@@ -48,7 +48,7 @@ TEST(MetricVocabulary, EveryScoredMetricAndPierceFieldHasALabel) {
 
 TEST(MetricVocabulary, EveryLabelIsTranslatedIntoGermanAndSpanish) {
   const QStringList english = everyLabel();
-  for (const QString language : {QStringLiteral("de"), QStringLiteral("es")}) {
+  for (const QString& language : {QStringLiteral("de"), QStringLiteral("es")}) {
     QTranslator translator;
     ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/microsim_") + language));
     QCoreApplication::installTranslator(&translator);
