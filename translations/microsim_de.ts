@@ -1038,6 +1038,10 @@
         <source>%1: [%2/%3] %4 (%5 s)</source>
         <translation>%1: [%2/%3] %4 (%5 s)</translation>
     </message>
+    <message>
+        <source>forceps closes on nothing: nothing lies between its jaws</source>
+        <translation>Pinzette schließt ins Leere: zwischen ihren Branchen liegt nichts</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1240,6 +1244,14 @@
     <message>
         <source>The score could not be stored (%1).</source>
         <translation>Die Bewertung konnte nicht gespeichert werden (%1).</translation>
+    </message>
+    <message>
+        <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>Die linke Pinzette hat ins Leere gegriffen: zwischen ihren Branchen lag nichts.</translation>
+    </message>
+    <message>
+        <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>Die rechte Pinzette hat ins Leere gegriffen: zwischen ihren Branchen lag nichts.</translation>
     </message>
 </context>
 <context>

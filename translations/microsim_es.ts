@@ -1038,6 +1038,10 @@
         <source>%1: [%2/%3] %4 (%5 s)</source>
         <translation>%1: [%2/%3] %4 (%5 s)</translation>
     </message>
+    <message>
+        <source>forceps closes on nothing: nothing lies between its jaws</source>
+        <translation>la pinza se cierra en vacío: no hay nada entre sus ramas</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1240,6 +1244,14 @@
     <message>
         <source>The score could not be stored (%1).</source>
         <translation>No se pudo guardar la puntuación (%1).</translation>
+    </message>
+    <message>
+        <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>La pinza izquierda se cerró en vacío: no había nada entre sus ramas.</translation>
+    </message>
+    <message>
+        <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>La pinza derecha se cerró en vacío: no había nada entre sus ramas.</translation>
     </message>
 </context>
 <context>

@@ -169,6 +169,8 @@ bool AttemptPage::begin(const lesson::Lesson& lesson, int lessonIndex, assessmen
   for (const lesson::Step& s : lesson.steps) steps_->addItem(s.instruction.in(language));
   status_->setText(attemptId_ == 0 ? tr("This attempt is not stored (no history).") : QString());
   stepsDone_ = 0;
+  eventsSeen_ = 0;
+  graspNoted_ = false;
   restPositions_.clear();
   maxDisplacementMm_ = 0.0;
   finish_->setEnabled(true);
@@ -210,6 +212,8 @@ void AttemptPage::replay(std::vector<sim::InputFrame> frames, bool finishAtEnd) 
   runner_->setRecordingFile(recordingPath_);
   viewport_->sceneChanged();
   restPositions_.clear();
+  eventsSeen_ = 0;
+  graspNoted_ = false;
   replaying_ = true;
   finishAtEnd_ = finishAtEnd;
   status_->setText(tr("Replaying a recording…"));
@@ -239,7 +243,9 @@ void AttemptPage::updateProgress() {
       maxDisplacementMm_ = std::max(maxDisplacementMm_, std::sqrt(dx * dx + dy * dy + dz * dz));
     }
   }
-  const lesson::AttemptFacts facts = lesson::collectFacts(runner_->events(), runner_->pierces(), maxDisplacementMm_);
+  const std::vector<sim::SceneEvent> events = runner_->events();
+  noteGrasps(events);
+  const lesson::AttemptFacts facts = lesson::collectFacts(events, runner_->pierces(), maxDisplacementMm_);
   const int done = lesson::stepsDone(lesson_, facts);
   for (int i = 0; i < steps_->count(); ++i) {
     QListWidgetItem* item = steps_->item(i);
@@ -252,6 +258,23 @@ void AttemptPage::updateProgress() {
   stepsDone_ = done;
   if (done == static_cast<int>(lesson_.steps.size()) && !replaying_)
     status_->setText(tr("Every step is done: finish the attempt when you are ready."));
+}
+
+void AttemptPage::noteGrasps(const std::vector<sim::SceneEvent>& events) {
+  if (events.size() < eventsSeen_) eventsSeen_ = 0;  // a new scene
+  for (std::size_t i = eventsSeen_; i < events.size(); ++i) {
+    const sim::SceneEvent& e = events[i];
+    if (e.kind == sim::SceneEventKind::GraspEmpty) {
+      status_->setText(e.hand == static_cast<int>(sim::Hand::Left)
+                           ? tr("The left forceps closed on nothing: nothing lay between its jaws.")
+                           : tr("The right forceps closed on nothing: nothing lay between its jaws."));
+      graspNoted_ = true;
+    } else if (graspNoted_ && (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)) {
+      status_->clear();
+      graspNoted_ = false;
+    }
+  }
+  eventsSeen_ = events.size();
 }
 
 void AttemptPage::finish() {

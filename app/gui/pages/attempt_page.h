@@ -94,6 +94,8 @@ class AttemptPage : public QWidget {
 
  private:
   void updateProgress();
+  /// Says so on the page when a forceps closed on nothing; the next grasp clears it.
+  void noteGrasps(const std::vector<sim::SceneEvent>& events);
   void stopRunning();
   void scored(const AttemptResult& result);
 
@@ -122,6 +124,8 @@ class AttemptPage : public QWidget {
   bool replaying_ = false;
   bool finishAtEnd_ = true;
   int stepsDone_ = 0;
+  std::size_t eventsSeen_ = 0;  ///< the scene's events noteGrasps has looked at
+  bool graspNoted_ = false;     ///< the status shows a grasp that closed on nothing
   std::vector<float> restPositions_;
   double maxDisplacementMm_ = 0.0;
 };
