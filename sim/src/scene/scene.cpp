@@ -564,7 +564,9 @@ std::uint64_t Scene::hash() const {
   for (const auto& f : forceps_) {
     if (!f) continue;
     const int node = f->heldSutureNode();
+    const double fraction = f->heldSutureFraction();
     h = fnv1a64(&node, sizeof node, h);
+    h = fnv1a64(&fraction, sizeof fraction, h);
     h = fnv1a64(f->heldNodes().data(), sizeof(int) * f->heldNodes().size(), h);
     for (const tools::HeldFacePoint& p : f->heldFaces()) {
       h = fnv1a64(&p.face, sizeof p.face, h);

@@ -122,8 +122,9 @@ class Scene {
   const std::vector<PierceEvent>& pierces() const { return pierces_; }
 
   /// Golden-state hash: tissue positions and velocities, the suture's positions, previous
-  /// positions, links and pierces, what every forceps holds (the suture node, the held
-  /// nodes, each held face and its barycentric point), and the step count.
+  /// positions, links and pierces, what every forceps holds (the suture node and the fraction
+  /// along its link, the held nodes, each held face and its barycentric point), and the step
+  /// count.
   std::uint64_t hash() const;
 
  private:
