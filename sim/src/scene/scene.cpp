@@ -162,24 +162,8 @@ void Scene::grab(int hand) {
   if (suture_) {
     const tools::GraspRegion region = f.graspRegion(suture_->def().contactRadius);
     if (const auto at = tools::chainPointBetweenJaws(region, sutureState_.x, sutureState_.alive)) {
-      // a point within rounding of a node is the node
-      const double length = (sutureState_.x.col(at->link + 1) - sutureState_.x.col(at->link)).norm();
-      int node = at->link;
-      double fraction = at->fraction;
-      if (fraction * length <= tools::kGripSnap) {
-        fraction = 0.0;
-      } else if ((1.0 - fraction) * length <= tools::kGripSnap) {
-        node = at->link + 1;
-        fraction = 0.0;
-      }
-      suture::Grip where;
-      where.node = node;
-      where.fraction = fraction;
-      const Vec3 point = suture::gripPoint(sutureState_.x, where);
-      const Vec3 link = fraction > 0.0 ? Vec3(sutureState_.x.col(node + 1) - sutureState_.x.col(node)) : Vec3::Zero();
-      f.holdSuture(node, fraction, point, suture::gripHoldsNeedle(*suture_, where),
-                   suture::needleRotation(*suture_, sutureState_.x), link.norm() > 0.0 ? Vec3(link.normalized()) : link);
-      addEvent(SceneEventKind::GripSuture, hand, node, 1);
+      f.holdSuture(*at, *suture_, sutureState_.x);
+      addEvent(SceneEventKind::GripSuture, hand, f.heldSutureNode(), 1);
       return;
     }
   }

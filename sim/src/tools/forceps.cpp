@@ -93,14 +93,27 @@ void Forceps::holdTissue(const std::vector<FaceGrasp>& faces, const SpringModel&
     offsets_.col(static_cast<Eigen::Index>(k)) = inverse * Vec3(x.col(nodes_[k]));
 }
 
-void Forceps::holdSuture(int node, double fraction, const Vec3& position, bool needle,
-                         const Eigen::Matrix3d& needleRotation, const Vec3& linkDirection) {
-  sutureNode_ = node;
-  sutureFraction_ = fraction;
-  needle_ = needle;
-  sutureOffset_ = pose_.inverse() * position;
-  needleRelative_ = pose_.linear().transpose() * needleRotation;
-  linkDirection_ = pose_.linear().transpose() * linkDirection;
+void Forceps::holdSuture(const ChainGrasp& at, const suture::SutureModel& model, const Points& x) {
+  // a point within rounding of a node is the node
+  const double length = (x.col(at.link + 1) - x.col(at.link)).norm();
+  suture::Grip where;
+  where.node = at.link;
+  where.fraction = at.fraction;
+  if (at.fraction * length <= kGripSnap) {
+    where.fraction = 0.0;
+  } else if ((1.0 - at.fraction) * length <= kGripSnap) {
+    where.node = at.link + 1;
+    where.fraction = 0.0;
+  }
+
+  // the point, the needle's rotation and the held link's direction, kept in the tool frame
+  sutureNode_ = where.node;
+  sutureFraction_ = where.fraction;
+  needle_ = suture::gripHoldsNeedle(model, where);
+  sutureOffset_ = pose_.inverse() * suture::gripPoint(x, where);
+  needleRelative_ = pose_.linear().transpose() * suture::needleRotation(model, x);
+  const Vec3 link = where.fraction > 0.0 ? Vec3(x.col(where.node + 1) - x.col(where.node)) : Vec3::Zero();
+  linkDirection_ = link.norm() > 0.0 ? Vec3(pose_.linear().transpose() * link.normalized()) : Vec3::Zero();
 }
 
 void Forceps::release() {

@@ -31,11 +31,15 @@
 //
 // Hold stiffness. ForcepsDef::holdStiffness, 3e5 g/s² for a whole grasp (about the thread's
 // axial stiffness, which couples a pierce to its wall), keeps a grasped wall within a small
-// fraction of its 0.1 mm thickness of the jaws: on the shipped anastomosis, lifted 0.3 mm
-// (lesson 1's stretch) the held patch lags 0.002 mm (a sliver of a face, with its small share,
-// 0.008 mm), lifted 0.5 mm 0.004 mm (0.016) under a 1.2 mN pull. A third of it lagged 0.004 and
-// 0.011 mm at 0.3 and 0.5 mm, three times it 0.001 and 0.011: the wall itself between the
-// held points takes the rest, and a stiffer hold only conditions newton's solve worse
+// fraction of its 0.1 mm thickness of the jaws. Measured on the shipped anastomosis, the wall
+// grasped from above and lifted 0.3 mm (lesson 1's stretch) and 0.5 mm: the held patch's lag
+// by share, and in brackets its largest (a face the jaws clip a sliver of, whose share is small):
+//     hold      lifted 0.3 mm      lifted 0.5 mm
+//     1e5       0.004 (0.011) mm   0.009 (0.022) mm
+//     3e5       0.002 (0.008)      0.004 (0.016)    (pulling 1.2 mN)
+//     1e6       0.001 (0.006)      0.002 (0.011)
+// A softer hold lets the wall sag past the 0.01–0.02 mm it allows; a stiffer one gains little
+// (the wall between the held points takes the rest) and conditions newton's solve worse
 // (tests/sim/tools/forceps_test.cpp, ShippedHoldFollowsTheJawWithinAFractionOfTheWall).
 //
 // Units: millimetres, radians inside (degrees in the def).
@@ -106,12 +110,9 @@ class Forceps {
 
   /// Takes hold of the tissue faces `faces` of `tissue` at positions x (header essay).
   void holdTissue(const std::vector<FaceGrasp>& faces, const SpringModel& tissue, const Points& x);
-  /// Takes hold of the suture at `node` and `fraction` along its link to node + 1 (0: the
-  /// node), a point at `position`. `needle`: the grip holds the needle, whose rotation is
-  /// `needleRotation` (needle frame → scene); between two thread nodes the link lies along
-  /// `linkDirection` (unit, node → node + 1).
-  void holdSuture(int node, double fraction, const Vec3& position, bool needle,
-                  const Eigen::Matrix3d& needleRotation, const Vec3& linkDirection);
+  /// Takes hold of the suture of `model` at positions x at the point `at` (a point within
+  /// kGripSnap of a node taken at the node; header essay).
+  void holdSuture(const ChainGrasp& at, const suture::SutureModel& model, const Points& x);
   void release();
 
   /// The held faces' corners that are not fixed, in index order (the nodes a grasp moves).
