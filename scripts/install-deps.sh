@@ -19,6 +19,9 @@ packages=(
   libopenigtlink-dev
   # tests: GoogleTest, a virtual display for GUI tests, a PostgreSQL server for the storage tests
   libgtest-dev libgmock-dev xvfb xauth postgresql
+  # the Debian package (scripts/package-test.sh): cpack's dependency derivation (dpkg-shlibdeps),
+  # the desktop entry's validator, groff to check the man pages
+  dpkg-dev desktop-file-utils groff-base
   # hardening (scripts/hardening.sh): clang with its sanitizer and libFuzzer runtimes, the
   # symbolizer for their stack traces, clang-tidy
   clang-14 libclang-rt-14-dev llvm-14 clang-tidy-14

@@ -3,10 +3,6 @@
 <context>
     <name>Cli</name>
     <message>
-        <source>microsim-cli: this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)</source>
-        <translation>microsim-cli: dieser Build enthält keine Benchmarks (mit -DMICROSIM_BUILD_BENCHMARKS=ON konfigurieren)</translation>
-    </message>
-    <message>
         <source>Write the rows as JSON to &lt;file&gt;.</source>
         <translation>Die Zeilen als JSON in &lt;file&gt; schreiben.</translation>
     </message>
@@ -37,26 +33,6 @@
     <message>
         <source>Benchmarks:</source>
         <translation>Benchmarks:</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: name one benchmark (see --list)</source>
-        <translation>microsim-cli bench: bitte genau einen Benchmark nennen (siehe --list)</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: unknown benchmark '%1' (see --list)</source>
-        <translation>microsim-cli bench: unbekannter Benchmark „%1“ (siehe --list)</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: cannot write %1: %2</source>
-        <translation>microsim-cli bench: %1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: '%1' has no curves to plot</source>
-        <translation>microsim-cli bench: „%1“ hat keine Kurven zum Zeichnen</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: cannot write the plot %1</source>
-        <translation>microsim-cli bench: das Diagramm %1 kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>run a benchmark (beside the paper's figures)</source>
@@ -351,22 +327,6 @@
         <translation>pivot oder register</translation>
     </message>
     <message>
-        <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
-        <translation>microsim-cli calibrate: pivot oder register angeben und --input DATEI nennen</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: cannot read %1</source>
-        <translation>microsim-cli calibrate: %1 kann nicht gelesen werden</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: %1 is not a JSON object: %2</source>
-        <translation>microsim-cli calibrate: %1 ist kein JSON-Objekt: %2</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: cannot write %1</source>
-        <translation>microsim-cli calibrate: %1 kann nicht geschrieben werden</translation>
-    </message>
-    <message>
         <source>run a scene on recorded or scripted input (hash, events, timings)</source>
         <translation>eine Szene mit aufgezeichneter oder geskripteter Eingabe ausführen (Hash, Ereignisse, Zeiten)</translation>
     </message>
@@ -451,10 +411,6 @@
         <translation>beschädigte Aufzeichnung (fehlerhaftes Bild)</translation>
     </message>
     <message>
-        <source>The scene &lt;file&gt; to run.</source>
-        <translation>Die auszuführende Szene &lt;file&gt;.</translation>
-    </message>
-    <message>
         <source>Replay the input frames of the recording &lt;file&gt;.</source>
         <translation>Die Eingabebilder der Aufzeichnung &lt;file&gt; abspielen.</translation>
     </message>
@@ -477,14 +433,6 @@
     <message>
         <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
         <translation>Hash, Ereignisse und Zeiten als JSON in &lt;file&gt; schreiben.</translation>
-    </message>
-    <message>
-        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Aufruf: microsim-cli run --scene DATEI [--input AUFZ | --script stitch] [--record AUFZ] [--frames N] [--json AUS]</translation>
-    </message>
-    <message>
-        <source>--scene FILE is required</source>
-        <translation>--scene DATEI ist erforderlich</translation>
     </message>
     <message>
         <source>--input and --script exclude each other</source>
@@ -591,18 +539,6 @@
         <translation>Posen verwerfen, die sich schneller als &lt;mm/s&gt; bewegen (Vorgabe 2000).</translation>
     </message>
     <message>
-        <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
-        <translation>microsim-cli track: den Server als --igtl HOST:PORT angeben</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: --duration and --max-speed take positive numbers</source>
-        <translation>microsim-cli track: --duration und --max-speed erwarten positive Zahlen</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: could not connect to %1:%2: %3</source>
-        <translation>microsim-cli track: keine Verbindung zu %1:%2: %3</translation>
-    </message>
-    <message>
         <source>%1 connection(s) to %2:%3</source>
         <translation>%1 Verbindung(en) zu %2:%3</translation>
     </message>
@@ -613,10 +549,6 @@
     <message>
         <source>rejected: %1</source>
         <translation>verworfen: %1</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: cannot write %1</source>
-        <translation>microsim-cli track: %1 kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>sample %1 of the tracker stream: bad "%2"</source>
@@ -747,28 +679,8 @@
         <translation>list-trainees: zusätzlich JSON in &lt;file&gt; schreiben.</translation>
     </message>
     <message>
-        <source>migrate, backup, restore, export-csv, list-trainees, add-trainee or add-instructor</source>
-        <translation>migrate, backup, restore, export-csv, list-trainees, add-trainee oder add-instructor</translation>
-    </message>
-    <message>
         <source>Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db FILE_OR_URL]</source>
         <translation>Aufruf: microsim-cli db migrate|backup DATEI|restore DATEI|export-csv DATEI --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db DATEI_ODER_URL]</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: add-instructor reads the password from stdin: give --password-stdin</source>
-        <translation>microsim-cli db: add-instructor liest das Passwort von stdin: --password-stdin angeben</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: export-csv needs --instructor NAME (password on stdin)</source>
-        <translation>microsim-cli db: export-csv braucht --instructor NAME (Passwort über stdin)</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: %1</source>
-        <translation>microsim-cli db: %1</translation>
-    </message>
-    <message>
-        <source>microsim-cli db %1: %2</source>
-        <translation>microsim-cli db %1: %2</translation>
     </message>
     <message>
         <source>%1: schema version %2</source>
@@ -781,10 +693,6 @@
     <message>
         <source>restored %1 from %2 (schema version %3)</source>
         <translation>%1 aus %2 wiederhergestellt (Schemaversion %3)</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: cannot write %1</source>
-        <translation>microsim-cli db: %1 kann nicht geschrieben werden</translation>
     </message>
     <message>
         <source>wrote %1</source>
@@ -927,30 +835,6 @@
         <translation>Hinterwand</translation>
     </message>
     <message>
-        <source>not allowed</source>
-        <translation>nicht erlaubt</translation>
-    </message>
-    <message>
-        <source>not found</source>
-        <translation>nicht gefunden</translation>
-    </message>
-    <message>
-        <source>the attempt is no longer in progress</source>
-        <translation>der Versuch läuft nicht mehr</translation>
-    </message>
-    <message>
-        <source>the name is taken</source>
-        <translation>der Name ist vergeben</translation>
-    </message>
-    <message>
-        <source>database error</source>
-        <translation>Datenbankfehler</translation>
-    </message>
-    <message>
-        <source>cannot open the history database %1</source>
-        <translation>die Verlaufsdatenbank %1 lässt sich nicht öffnen</translation>
-    </message>
-    <message>
         <source>cannot store the attempt: %1</source>
         <translation>der Versuch lässt sich nicht speichern: %1</translation>
     </message>
@@ -1022,21 +906,117 @@
         <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
         <translation>Aufruf: microsim-cli track --igtl HOST:PORT [--duration S] [--json DATEI] [--record DATEI] [--once] [--max-speed MM_S]</translation>
     </message>
-    <message numerus="yes">
-        <source>microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
-        <translation><numerusform>microsim-cli calibrate: Warnung: %1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet wird sein %n vollständiges Sample</numerusform><numerusform>microsim-cli calibrate: Warnung: %1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet werden seine %n vollständigen Samples</numerusform></translation>
-    </message>
     <message>
         <source>the file could not be read or written</source>
         <translation>die Datei konnte nicht gelesen oder geschrieben werden</translation>
     </message>
     <message>
-        <source>microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
-        <translation>microsim-cli db backup: %1 existiert bereits und wurde nicht verändert. Wählen Sie einen anderen Namen für die Sicherung oder verschieben Sie diese Datei zuerst.</translation>
-    </message>
-    <message>
         <source>%1: [%2/%3] %4 (%5 s)</source>
         <translation>%1: [%2/%3] %4 (%5 s)</translation>
+    </message>
+    <message>
+        <source>this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)</source>
+        <translation>dieser Build enthält keine Benchmarks (mit -DMICROSIM_BUILD_BENCHMARKS=ON konfigurieren)</translation>
+    </message>
+    <message>
+        <source>name one benchmark (see --list)</source>
+        <translation>bitte genau einen Benchmark nennen (siehe --list)</translation>
+    </message>
+    <message>
+        <source>unknown benchmark '%1' (see --list)</source>
+        <translation>unbekannter Benchmark „%1“ (siehe --list)</translation>
+    </message>
+    <message>
+        <source>'%1' has no curves to plot</source>
+        <translation>„%1“ hat keine Kurven zum Zeichnen</translation>
+    </message>
+    <message>
+        <source>cannot write the plot %1</source>
+        <translation>das Diagramm %1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>%1 kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a JSON object: %2</source>
+        <translation>%1 ist kein JSON-Objekt: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
+        <translation><numerusform>%1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet wird sein %n vollständiges Sample</numerusform><numerusform>%1 ist unvollständig (die Aufzeichnung endete vorzeitig); verwendet werden seine %n vollständigen Samples</numerusform></translation>
+    </message>
+    <message>
+        <source>say pivot or register, and give --input FILE</source>
+        <translation>pivot oder register angeben und --input DATEI nennen</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>the file or name the action takes</source>
+        <translation>die Datei oder der Name, den die Aktion erwartet</translation>
+    </message>
+    <message>
+        <source>name an action: %1</source>
+        <translation>bitte eine Aktion nennen: %1</translation>
+    </message>
+    <message>
+        <source>unknown action '%1' (known: %2)</source>
+        <translation>unbekannte Aktion „%1“ (bekannt: %2)</translation>
+    </message>
+    <message>
+        <source>%1 needs a file or a name after it</source>
+        <translation>%1 braucht danach eine Datei oder einen Namen</translation>
+    </message>
+    <message>
+        <source>add-instructor reads the password from stdin: give --password-stdin</source>
+        <translation>add-instructor liest das Passwort von stdin: --password-stdin angeben</translation>
+    </message>
+    <message>
+        <source>export-csv needs --instructor NAME (password on stdin)</source>
+        <translation>export-csv braucht --instructor NAME (Passwort über stdin)</translation>
+    </message>
+    <message>
+        <source>%1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
+        <translation>%1 existiert bereits und wurde nicht verändert. Wählen Sie einen anderen Namen für die Sicherung oder verschieben Sie diese Datei zuerst.</translation>
+    </message>
+    <message>
+        <source>give the server as --igtl HOST:PORT</source>
+        <translation>den Server als --igtl HOST:PORT angeben</translation>
+    </message>
+    <message>
+        <source>--duration and --max-speed take positive numbers</source>
+        <translation>--duration und --max-speed erwarten positive Zahlen</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>could not connect to %1:%2: %3</source>
+        <translation>keine Verbindung zu %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the recording was made on the scene %1, which is not there, not beside the recording and not among the shipped scenes (looked at: %2); give --scene FILE</source>
+        <translation>die Aufzeichnung wurde mit der Szene %1 gemacht, die weder dort noch neben der Aufzeichnung noch unter den mitgelieferten Szenen liegt (gesucht in: %2); --scene DATEI angeben</translation>
+    </message>
+    <message>
+        <source>%1 has changed since the recording was made on it (%2): the replay may differ from the attempt</source>
+        <translation>%1 wurde geändert, seit die Aufzeichnung damit gemacht wurde (%2): die Wiedergabe kann vom Versuch abweichen</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run (default with --input: the one the recording names).</source>
+        <translation>Die auszuführende Szene &lt;file&gt; (Vorgabe mit --input: die, die die Aufzeichnung nennt).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Aufruf: microsim-cli run (--scene DATEI [--input AUFZ | --script stitch] | --input AUFZ) [--record AUFZ] [--frames N] [--json AUS]</translation>
+    </message>
+    <message>
+        <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
+        <translation>--scene DATEI angeben, oder --input AUFZ, um sie auf der Szene wiederzugeben, mit der sie aufgezeichnet wurde</translation>
     </message>
     <message>
         <source>forceps closes on nothing: nothing lies between its jaws</source>
@@ -1068,6 +1048,26 @@
     <message>
         <source>cannot create %1</source>
         <translation>%1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Start as usual, quit once the main window is drawn; exit 1 if it was not, or a lesson or the history could not be read.</source>
+        <translation>Wie gewohnt starten und beenden, sobald das Hauptfenster gezeichnet ist; Exit-Code 1, wenn es nicht gezeichnet wurde oder eine Lektion oder der Verlauf nicht gelesen werden konnte.</translation>
+    </message>
+    <message>
+        <source>the main window was not drawn within %1 s</source>
+        <translation>das Hauptfenster wurde nicht innerhalb von %1 s gezeichnet</translation>
+    </message>
+    <message>
+        <source>no lesson files in %1</source>
+        <translation>keine Lektionsdateien in %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n lesson file(s) in %2 could be read</source>
+        <translation><numerusform>%1 von %n Lektionsdatei in %2 lesbar</numerusform><numerusform>%1 von %n Lektionsdateien in %2 lesbar</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim started: %n lesson(s) from %1, history %2</source>
+        <translation><numerusform>microsim gestartet: %n Lektion aus %1, Verlauf %2</numerusform><numerusform>microsim gestartet: %n Lektionen aus %1, Verlauf %2</numerusform></translation>
     </message>
 </context>
 <context>

@@ -3,10 +3,6 @@
 <context>
     <name>Cli</name>
     <message>
-        <source>microsim-cli: this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)</source>
-        <translation>microsim-cli: esta compilación no incluye benchmarks (configure con -DMICROSIM_BUILD_BENCHMARKS=ON)</translation>
-    </message>
-    <message>
         <source>Write the rows as JSON to &lt;file&gt;.</source>
         <translation>Escribir las filas como JSON en &lt;file&gt;.</translation>
     </message>
@@ -37,26 +33,6 @@
     <message>
         <source>Benchmarks:</source>
         <translation>Benchmarks:</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: name one benchmark (see --list)</source>
-        <translation>microsim-cli bench: indique un solo benchmark (vea --list)</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: unknown benchmark '%1' (see --list)</source>
-        <translation>microsim-cli bench: benchmark desconocido «%1» (vea --list)</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: cannot write %1: %2</source>
-        <translation>microsim-cli bench: no se puede escribir %1: %2</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: '%1' has no curves to plot</source>
-        <translation>microsim-cli bench: «%1» no tiene curvas que dibujar</translation>
-    </message>
-    <message>
-        <source>microsim-cli bench: cannot write the plot %1</source>
-        <translation>microsim-cli bench: no se puede escribir el gráfico %1</translation>
     </message>
     <message>
         <source>run a benchmark (beside the paper's figures)</source>
@@ -351,22 +327,6 @@
         <translation>pivot o register</translation>
     </message>
     <message>
-        <source>microsim-cli calibrate: say pivot or register, and give --input FILE</source>
-        <translation>microsim-cli calibrate: indique pivot o register, y --input ARCHIVO</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: cannot read %1</source>
-        <translation>microsim-cli calibrate: no se puede leer %1</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: %1 is not a JSON object: %2</source>
-        <translation>microsim-cli calibrate: %1 no es un objeto JSON: %2</translation>
-    </message>
-    <message>
-        <source>microsim-cli calibrate: cannot write %1</source>
-        <translation>microsim-cli calibrate: no se puede escribir %1</translation>
-    </message>
-    <message>
         <source>run a scene on recorded or scripted input (hash, events, timings)</source>
         <translation>ejecutar una escena con entrada grabada o programada (hash, eventos, tiempos)</translation>
     </message>
@@ -451,10 +411,6 @@
         <translation>grabación dañada (fotograma mal formado)</translation>
     </message>
     <message>
-        <source>The scene &lt;file&gt; to run.</source>
-        <translation>La escena &lt;file&gt; que se ejecutará.</translation>
-    </message>
-    <message>
         <source>Replay the input frames of the recording &lt;file&gt;.</source>
         <translation>Reproducir los fotogramas de entrada de la grabación &lt;file&gt;.</translation>
     </message>
@@ -477,14 +433,6 @@
     <message>
         <source>Write the hash, events and timings as JSON to &lt;file&gt;.</source>
         <translation>Escribir el hash, los eventos y los tiempos como JSON en &lt;file&gt;.</translation>
-    </message>
-    <message>
-        <source>Usage: microsim-cli run --scene FILE [--input REC | --script stitch] [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Uso: microsim-cli run --scene ARCHIVO [--input GRAB | --script stitch] [--record GRAB] [--frames N] [--json SALIDA]</translation>
-    </message>
-    <message>
-        <source>--scene FILE is required</source>
-        <translation>--scene ARCHIVO es obligatorio</translation>
     </message>
     <message>
         <source>--input and --script exclude each other</source>
@@ -591,18 +539,6 @@
         <translation>Rechazar poses que se muevan más rápido que &lt;mm/s&gt; (predeterminado 2000).</translation>
     </message>
     <message>
-        <source>microsim-cli track: give the server as --igtl HOST:PORT</source>
-        <translation>microsim-cli track: indique el servidor como --igtl HOST:PUERTO</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: --duration and --max-speed take positive numbers</source>
-        <translation>microsim-cli track: --duration y --max-speed esperan números positivos</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: could not connect to %1:%2: %3</source>
-        <translation>microsim-cli track: no se pudo conectar a %1:%2: %3</translation>
-    </message>
-    <message>
         <source>%1 connection(s) to %2:%3</source>
         <translation>%1 conexión(es) a %2:%3</translation>
     </message>
@@ -613,10 +549,6 @@
     <message>
         <source>rejected: %1</source>
         <translation>rechazadas: %1</translation>
-    </message>
-    <message>
-        <source>microsim-cli track: cannot write %1</source>
-        <translation>microsim-cli track: no se puede escribir %1</translation>
     </message>
     <message>
         <source>sample %1 of the tracker stream: bad "%2"</source>
@@ -747,28 +679,8 @@
         <translation>list-trainees: escribir también JSON en &lt;file&gt;.</translation>
     </message>
     <message>
-        <source>migrate, backup, restore, export-csv, list-trainees, add-trainee or add-instructor</source>
-        <translation>migrate, backup, restore, export-csv, list-trainees, add-trainee o add-instructor</translation>
-    </message>
-    <message>
         <source>Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db FILE_OR_URL]</source>
         <translation>Uso: microsim-cli db migrate|backup ARCHIVO|restore ARCHIVO|export-csv ARCHIVO --instructor NOMBRE|list-trainees|add-trainee NOMBRE [--group G]|add-instructor NOMBRE --password-stdin [--db ARCHIVO_O_URL]</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: add-instructor reads the password from stdin: give --password-stdin</source>
-        <translation>microsim-cli db: add-instructor lee la contraseña de stdin: indique --password-stdin</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: export-csv needs --instructor NAME (password on stdin)</source>
-        <translation>microsim-cli db: export-csv necesita --instructor NOMBRE (contraseña por stdin)</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: %1</source>
-        <translation>microsim-cli db: %1</translation>
-    </message>
-    <message>
-        <source>microsim-cli db %1: %2</source>
-        <translation>microsim-cli db %1: %2</translation>
     </message>
     <message>
         <source>%1: schema version %2</source>
@@ -781,10 +693,6 @@
     <message>
         <source>restored %1 from %2 (schema version %3)</source>
         <translation>%1 restaurada desde %2 (versión de esquema %3)</translation>
-    </message>
-    <message>
-        <source>microsim-cli db: cannot write %1</source>
-        <translation>microsim-cli db: no se puede escribir %1</translation>
     </message>
     <message>
         <source>wrote %1</source>
@@ -927,30 +835,6 @@
         <translation>pared posterior</translation>
     </message>
     <message>
-        <source>not allowed</source>
-        <translation>no permitido</translation>
-    </message>
-    <message>
-        <source>not found</source>
-        <translation>no encontrado</translation>
-    </message>
-    <message>
-        <source>the attempt is no longer in progress</source>
-        <translation>el intento ya no está en curso</translation>
-    </message>
-    <message>
-        <source>the name is taken</source>
-        <translation>el nombre ya existe</translation>
-    </message>
-    <message>
-        <source>database error</source>
-        <translation>error de base de datos</translation>
-    </message>
-    <message>
-        <source>cannot open the history database %1</source>
-        <translation>no se puede abrir la base de datos de historial %1</translation>
-    </message>
-    <message>
         <source>cannot store the attempt: %1</source>
         <translation>no se puede guardar el intento: %1</translation>
     </message>
@@ -1022,21 +906,117 @@
         <source>Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]</source>
         <translation>Uso: microsim-cli track --igtl HOST:PUERTO [--duration S] [--json ARCHIVO] [--record ARCHIVO] [--once] [--max-speed MM_S]</translation>
     </message>
-    <message numerus="yes">
-        <source>microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
-        <translation><numerusform>microsim-cli calibrate: aviso: %1 está incompleto (la grabación se detuvo antes de su final); se usa su %n muestra completa</numerusform><numerusform>microsim-cli calibrate: aviso: %1 está incompleto (la grabación se detuvo antes de su final); se usan sus %n muestras completas</numerusform></translation>
-    </message>
     <message>
         <source>the file could not be read or written</source>
         <translation>no se pudo leer ni escribir el archivo</translation>
     </message>
     <message>
-        <source>microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
-        <translation>microsim-cli db backup: %1 ya existe; no se ha modificado. Elija otro nombre para la copia de seguridad o mueva antes ese archivo.</translation>
-    </message>
-    <message>
         <source>%1: [%2/%3] %4 (%5 s)</source>
         <translation>%1: [%2/%3] %4 (%5 s)</translation>
+    </message>
+    <message>
+        <source>this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)</source>
+        <translation>esta compilación no incluye benchmarks (configure con -DMICROSIM_BUILD_BENCHMARKS=ON)</translation>
+    </message>
+    <message>
+        <source>name one benchmark (see --list)</source>
+        <translation>indique un solo benchmark (vea --list)</translation>
+    </message>
+    <message>
+        <source>unknown benchmark '%1' (see --list)</source>
+        <translation>benchmark desconocido «%1» (vea --list)</translation>
+    </message>
+    <message>
+        <source>'%1' has no curves to plot</source>
+        <translation>«%1» no tiene curvas que dibujar</translation>
+    </message>
+    <message>
+        <source>cannot write the plot %1</source>
+        <translation>no se puede escribir el gráfico %1</translation>
+    </message>
+    <message>
+        <source>cannot read %1</source>
+        <translation>no se puede leer %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a JSON object: %2</source>
+        <translation>%1 no es un objeto JSON: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 was cut short (the recording stopped before its end); using its %n complete sample(s)</source>
+        <translation><numerusform>%1 está incompleto (la grabación se detuvo antes de su final); se usa su %n muestra completa</numerusform><numerusform>%1 está incompleto (la grabación se detuvo antes de su final); se usan sus %n muestras completas</numerusform></translation>
+    </message>
+    <message>
+        <source>say pivot or register, and give --input FILE</source>
+        <translation>indique pivot o register, y --input ARCHIVO</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>aviso: %1</translation>
+    </message>
+    <message>
+        <source>the file or name the action takes</source>
+        <translation>el archivo o el nombre que espera la acción</translation>
+    </message>
+    <message>
+        <source>name an action: %1</source>
+        <translation>indique una acción: %1</translation>
+    </message>
+    <message>
+        <source>unknown action '%1' (known: %2)</source>
+        <translation>acción desconocida «%1» (conocidas: %2)</translation>
+    </message>
+    <message>
+        <source>%1 needs a file or a name after it</source>
+        <translation>%1 necesita a continuación un archivo o un nombre</translation>
+    </message>
+    <message>
+        <source>add-instructor reads the password from stdin: give --password-stdin</source>
+        <translation>add-instructor lee la contraseña de stdin: indique --password-stdin</translation>
+    </message>
+    <message>
+        <source>export-csv needs --instructor NAME (password on stdin)</source>
+        <translation>export-csv necesita --instructor NOMBRE (contraseña por stdin)</translation>
+    </message>
+    <message>
+        <source>%1 exists already; it was left untouched. Choose another name for the backup, or move that file away first.</source>
+        <translation>%1 ya existe; no se ha modificado. Elija otro nombre para la copia de seguridad o mueva antes ese archivo.</translation>
+    </message>
+    <message>
+        <source>give the server as --igtl HOST:PORT</source>
+        <translation>indique el servidor como --igtl HOST:PUERTO</translation>
+    </message>
+    <message>
+        <source>--duration and --max-speed take positive numbers</source>
+        <translation>--duration y --max-speed esperan números positivos</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>no se puede escribir %1</translation>
+    </message>
+    <message>
+        <source>could not connect to %1:%2: %3</source>
+        <translation>no se pudo conectar a %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>the recording was made on the scene %1, which is not there, not beside the recording and not among the shipped scenes (looked at: %2); give --scene FILE</source>
+        <translation>la grabación se hizo con la escena %1, que no está ahí, ni junto a la grabación, ni entre las escenas incluidas (buscada en: %2); indique --scene ARCHIVO</translation>
+    </message>
+    <message>
+        <source>%1 has changed since the recording was made on it (%2): the replay may differ from the attempt</source>
+        <translation>%1 ha cambiado desde que se hizo la grabación con ella (%2): la reproducción puede diferir del intento</translation>
+    </message>
+    <message>
+        <source>The scene &lt;file&gt; to run (default with --input: the one the recording names).</source>
+        <translation>La escena &lt;file&gt; que se ejecutará (por defecto con --input: la que indica la grabación).</translation>
+    </message>
+    <message>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Uso: microsim-cli run (--scene ARCHIVO [--input GRAB | --script stitch] | --input GRAB) [--record GRAB] [--frames N] [--json SALIDA]</translation>
+    </message>
+    <message>
+        <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
+        <translation>indique --scene ARCHIVO, o --input GRAB para reproducirla en la escena con la que se grabó</translation>
     </message>
     <message>
         <source>forceps closes on nothing: nothing lies between its jaws</source>
@@ -1068,6 +1048,26 @@
     <message>
         <source>cannot create %1</source>
         <translation>no se puede crear %1</translation>
+    </message>
+    <message>
+        <source>Start as usual, quit once the main window is drawn; exit 1 if it was not, or a lesson or the history could not be read.</source>
+        <translation>Iniciar como de costumbre y salir en cuanto se dibuje la ventana principal; código de salida 1 si no se dibujó o si no se pudo leer una lección o el historial.</translation>
+    </message>
+    <message>
+        <source>the main window was not drawn within %1 s</source>
+        <translation>la ventana principal no se dibujó en %1 s</translation>
+    </message>
+    <message>
+        <source>no lesson files in %1</source>
+        <translation>no hay archivos de lección en %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n lesson file(s) in %2 could be read</source>
+        <translation><numerusform>se pudieron leer %1 de %n archivo de lección en %2</numerusform><numerusform>se pudieron leer %1 de %n archivos de lección en %2</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>microsim started: %n lesson(s) from %1, history %2</source>
+        <translation><numerusform>microsim iniciado: %n lección de %1, historial %2</numerusform><numerusform>microsim iniciado: %n lecciones de %1, historial %2</numerusform></translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 // and writes the JSON rows and a PNG of its curves when asked. While it runs, the case it
 // has started is a line on stderr ("speed-error: [3/11] 20^3, cold (12 s)", at most one a
 // second), never on stdout or in the JSON.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/output_file.h"
 
@@ -12,17 +13,15 @@
 #include "cli/progress_lines.h"
 #endif
 
-#include <QCommandLineParser>
 #include <QElapsedTimer>
-#include <QFile>
 
 #include <sstream>
 
 namespace microsim::cli {
 
-#ifdef MICROSIM_HAVE_BENCHMARKS
 namespace {
 
+#ifdef MICROSIM_HAVE_BENCHMARKS
 /// Runs `entry` with each case it starts shown on `err`, with the wall-clock seconds since
 /// the run began.
 bench::BenchReport runShowingProgress(const bench::BenchEntry& entry, bool quick, QTextStream& err) {
@@ -40,72 +39,77 @@ bench::BenchReport runShowingProgress(const bench::BenchEntry& entry, bool quick
   return entry.run(options);
 }
 
-}  // namespace
+// every benchmark with its one-line summary
+QString benchList() {
+  QString text = Cli::tr("Benchmarks:") + QLatin1Char('\n');
+  for (const bench::BenchEntry& e : bench::benchRegistry())
+    text += QStringLiteral("  ") + QString::fromStdString(e.name).leftJustified(14) + QString::fromStdString(e.summary) +
+            QLatin1Char('\n');
+  return text;
+}
+
 #endif
 
-int runBench(const QStringList& args, Streams& io) {
-#ifndef MICROSIM_HAVE_BENCHMARKS
-  Q_UNUSED(args);
-  io.err << Cli::tr("microsim-cli: this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)") << '\n';
-  return kExitFailure;
-#else
-  QCommandLineParser parser;
-  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the rows as JSON to <file>."), QStringLiteral("file"));
-  const QCommandLineOption plot(QStringLiteral("plot"), Cli::tr("Draw the curves to the PNG <file>."), QStringLiteral("file"));
-  const QCommandLineOption quick(QStringLiteral("quick"), Cli::tr("Smaller sizes and fewer repetitions."));
-  const QCommandLineOption list(QStringLiteral("list"), Cli::tr("List the benchmarks."));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({json, plot, quick, list, help});
-  parser.addPositionalArgument(QStringLiteral("name"), Cli::tr("The benchmark to run."));
-  if (!parser.parse(QStringList{QStringLiteral("bench")} + args)) {
-    io.err << "microsim-cli bench: " << parser.errorText() << '\n';
-    return kExitUsage;
-  }
+struct BenchCommandOptions {
+  QCommandLineOption json{QStringLiteral("json"), Cli::tr("Write the rows as JSON to <file>."), QStringLiteral("file")};
+  QCommandLineOption plot{QStringLiteral("plot"), Cli::tr("Draw the curves to the PNG <file>."), QStringLiteral("file")};
+  QCommandLineOption quick{QStringLiteral("quick"), Cli::tr("Smaller sizes and fewer repetitions.")};
+  QCommandLineOption list{QStringLiteral("list"), Cli::tr("List the benchmarks.")};
 
-  if (parser.isSet(help) || parser.isSet(list)) {
-    QTextStream& out = io.out;
-    if (parser.isSet(help))
-      out << Cli::tr("Usage: microsim-cli bench NAME [--json FILE] [--plot FILE.png] [--quick]") << "\n\n";
-    out << Cli::tr("Benchmarks:") << '\n';
-    for (const bench::BenchEntry& e : bench::benchRegistry())
-      out << "  " << QString::fromStdString(e.name).leftJustified(14) << QString::fromStdString(e.summary) << '\n';
+  QString usage() const { return Cli::tr("Usage: microsim-cli bench NAME [--json FILE] [--plot FILE.png] [--quick]"); }
+  void declare(CommandLine& line) const {
+    line.addOptions({json, plot, quick, list});
+    line.addWord(QStringLiteral("name"), Cli::tr("The benchmark to run."));
+#ifdef MICROSIM_HAVE_BENCHMARKS
+    line.setHelpDetails(benchList());
+#endif
+  }
+};
+
+#ifndef MICROSIM_HAVE_BENCHMARKS
+int runBenchmark(const CommandLine& line, const BenchCommandOptions&) {
+  return line.failure(Cli::tr("this build has no benchmarks (configure with -DMICROSIM_BUILD_BENCHMARKS=ON)"));
+}
+#else
+// load → run → report
+int runBenchmark(const CommandLine& line, const BenchCommandOptions& options) {
+  if (line.isSet(options.list)) {
+    line.io().out << benchList();
     return kExitOk;
   }
 
-  const QStringList names = parser.positionalArguments();
-  if (names.size() != 1) {
-    io.err << Cli::tr("microsim-cli bench: name one benchmark (see --list)") << '\n';
-    return kExitUsage;
-  }
-  const bench::BenchEntry* entry = bench::findBench(names.front().toStdString());
-  if (entry == nullptr) {
-    io.err << Cli::tr("microsim-cli bench: unknown benchmark '%1' (see --list)").arg(names.front()) << '\n';
-    return kExitUsage;
-  }
+  // load: the benchmark named
+  const QString name = line.words().value(0);
+  if (name.isEmpty()) return line.usageError(Cli::tr("name one benchmark (see --list)"));
+  const bench::BenchEntry* entry = bench::findBench(name.toStdString());
+  if (entry == nullptr) return line.usageError(Cli::tr("unknown benchmark '%1' (see --list)").arg(name));
 
-  const bench::BenchReport report = runShowingProgress(*entry, parser.isSet(quick), io.err);
+  // run
+  const bench::BenchReport report = runShowingProgress(*entry, line.isSet(options.quick), line.io().err);
 
+  // report: the table, the JSON rows, the plot
   std::ostringstream table;
   bench::printTable(table, report.rows);
-  io.out << QString::fromStdString(table.str());
-
-  if (parser.isSet(json)) {
-    QString why;
-    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(bench::toJson(report.rows)), why)) {
-      io.err << Cli::tr("microsim-cli bench: cannot write %1: %2").arg(parser.value(json), why) << '\n';
-      return kExitFailure;
-    }
+  line.io().out << QString::fromStdString(table.str());
+  if (line.isSet(options.json)) {
+    const int code =
+        writeCommandOutput(line, line.value(options.json), QByteArray::fromStdString(bench::toJson(report.rows)));
+    if (code != kExitOk) return code;
   }
-  if (parser.isSet(plot)) {
-    if (report.plots.empty()) {
-      io.err << Cli::tr("microsim-cli bench: '%1' has no curves to plot").arg(names.front()) << '\n';
-    } else if (!writePlotPng(report.plots, parser.value(plot))) {
-      io.err << Cli::tr("microsim-cli bench: cannot write the plot %1").arg(parser.value(plot)) << '\n';
-      return kExitFailure;
-    }
+  if (line.isSet(options.plot)) {
+    if (report.plots.empty())
+      line.warning(Cli::tr("'%1' has no curves to plot").arg(name));
+    else if (!writePlotPng(report.plots, line.value(options.plot)))
+      return line.failure(Cli::tr("cannot write the plot %1").arg(line.value(options.plot)));
   }
   return kExitOk;
+}
 #endif
+
+}  // namespace
+
+int runBench(const QStringList& args, Streams& io) {
+  return runCommand(QStringLiteral("bench"), args, io, &runBenchmark);
 }
 
 }  // namespace microsim::cli

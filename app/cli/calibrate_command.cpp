@@ -22,6 +22,7 @@
 //    "check_errors_mm": [...], "check_points"}
 //
 // Exit code 0 when the status is "ok", 1 otherwise (the JSON is still written), 2 on usage.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/output_file.h"
 
@@ -29,7 +30,6 @@
 #include "calibration/registration.h"
 #include "tracking/pose_stream.h"
 
-#include <QCommandLineParser>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -178,80 +178,44 @@ QJsonObject runRegister(const QJsonObject& in, int& exitCode, QString& error) {
                      {QStringLiteral("check_points"), r.checkCount}};
 }
 
-}  // namespace
+// the input document: a JSON object, or for pivot a tracker stream, whole or cut short
+// (a `track --record` that was killed leaves its complete samples and no end)
+struct CalibrationInput {
+  QJsonObject document;
+  bool isStream = false;
+  tracking::PoseStream stream;
+  tracking::PoseStreamStatus streamStatus{tracking::PoseStreamError::NotJson, -1, {}};
+};
 
-int runCalibrate(const QStringList& args, Streams& io) {
-  QCommandLineParser parser;
-  const QCommandLineOption input(QStringLiteral("input"), Cli::tr("Read the poses or points from the JSON <file>."),
-                                 QStringLiteral("file"));
-  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the result as JSON to <file>."), QStringLiteral("file"));
-  const QCommandLineOption device(QStringLiteral("device"), Cli::tr("pivot on a tracker stream: the device to calibrate."),
-                                  QStringLiteral("name"));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({input, json, device, help});
-  parser.addPositionalArgument(QStringLiteral("kind"), Cli::tr("pivot or register"));
-  if (!parser.parse(QStringList{QStringLiteral("calibrate")} + args)) {
-    io.err << "microsim-cli calibrate: " << parser.errorText() << '\n';
-    return kExitUsage;
-  }
-  if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli calibrate pivot|register --input FILE [--device NAME] [--json FILE]") << "\n\n"
-           << parser.helpText().section(QLatin1Char('\n'), 2);
-    return kExitOk;
-  }
-  const QStringList kinds = parser.positionalArguments();
-  const QString kind = kinds.size() == 1 ? kinds.front() : QString();
-  if ((kind != QLatin1String("pivot") && kind != QLatin1String("register")) || !parser.isSet(input)) {
-    io.err << Cli::tr("microsim-cli calibrate: say pivot or register, and give --input FILE") << '\n';
-    return kExitUsage;
-  }
-
-  // the input document: a JSON object, or for pivot a tracker stream, whole or cut short
-  // (a `track --record` that was killed leaves its complete samples and no end)
-  QFile f(parser.value(input));
+std::optional<CalibrationInput> readCalibrationInput(const CommandLine& line, const QString& path, bool pivot) {
+  QFile f(path);
   if (!f.open(QIODevice::ReadOnly)) {
-    io.err << Cli::tr("microsim-cli calibrate: cannot read %1").arg(parser.value(input)) << '\n';
-    return kExitFailure;
+    line.failure(Cli::tr("cannot read %1").arg(path));
+    return std::nullopt;
   }
   const QByteArray bytes = f.readAll();
   QJsonParseError parseError;
   const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
-  const bool pivot = kind == QLatin1String("pivot");
+  CalibrationInput in;
   // a stream's document has "samples"; one cut short is no JSON document at all
-  const bool isStream = pivot && (!doc.isObject() || doc.object().contains(QStringLiteral("samples")));
-  tracking::PoseStream stream;
-  tracking::PoseStreamStatus streamStatus{tracking::PoseStreamError::NotJson, -1, {}};
-  if (isStream) streamStatus = tracking::decodePoseStream(bytes, stream);
-  const bool cutShort = streamStatus.error == tracking::PoseStreamError::Truncated;
+  in.isStream = pivot && (!doc.isObject() || doc.object().contains(QStringLiteral("samples")));
+  if (in.isStream) in.streamStatus = tracking::decodePoseStream(bytes, in.stream);
+  const bool cutShort = in.streamStatus.error == tracking::PoseStreamError::Truncated;
   if (!doc.isObject() && !cutShort) {
-    io.err << Cli::tr("microsim-cli calibrate: %1 is not a JSON object: %2").arg(parser.value(input), parseError.errorString())
-           << '\n';
-    return kExitFailure;
+    line.failure(Cli::tr("%1 is not a JSON object: %2").arg(path, parseError.errorString()));
+    return std::nullopt;
   }
   if (cutShort)
-    io.err << Cli::tr("microsim-cli calibrate: warning: %1 was cut short (the recording stopped before its end); "
-                      "using its %n complete sample(s)",
-                      nullptr, static_cast<int>(stream.samples.size()))
-                  .arg(parser.value(input))
-           << '\n';
+    line.warning(Cli::tr("%1 was cut short (the recording stopped before its end); "
+                         "using its %n complete sample(s)",
+                         nullptr, static_cast<int>(in.stream.samples.size()))
+                     .arg(path));
+  in.document = doc.object();
+  return in;
+}
 
-  // the calibration
-  int exitCode = kExitFailure;
-  QString error;
-  QJsonObject result;
-  if (!pivot) {
-    result = runRegister(doc.object(), exitCode, error);
-  } else {
-    std::vector<Eigen::Isometry3d> poses;
-    if (!isStream || streamPoses(stream, streamStatus, parser.value(device), poses, error))
-      result = runPivot(doc.object(), std::move(poses), exitCode, error);
-  }
-  if (!error.isEmpty()) {
-    io.err << "microsim-cli calibrate: " << error << '\n';
-    return kExitFailure;
-  }
-
-  // the table
+// the result's fields, one a line
+void printCalibrationResult(QTextStream& out, const QJsonObject& result) {
   for (auto it = result.begin(); it != result.end(); ++it) {
     const QJsonValue v = it.value();
     QString text;
@@ -264,17 +228,63 @@ int runCalibrate(const QStringList& args, Streams& io) {
     } else {
       text = QString::number(v.toDouble(), 'g', 8);
     }
-    io.out << it.key().leftJustified(20) << text << '\n';
+    out << it.key().leftJustified(20) << text << '\n';
   }
+}
 
-  if (parser.isSet(json)) {
-    QString why;
-    if (!writeOutputFile(parser.value(json), QJsonDocument(result).toJson(), why)) {
-      io.err << Cli::tr("microsim-cli calibrate: cannot write %1").arg(parser.value(json)) << '\n';
-      return kExitFailure;
-    }
+struct CalibrateOptions {
+  QCommandLineOption input{QStringLiteral("input"), Cli::tr("Read the poses or points from the JSON <file>."),
+                           QStringLiteral("file")};
+  QCommandLineOption json{QStringLiteral("json"), Cli::tr("Write the result as JSON to <file>."), QStringLiteral("file")};
+  QCommandLineOption device{QStringLiteral("device"), Cli::tr("pivot on a tracker stream: the device to calibrate."),
+                            QStringLiteral("name")};
+
+  QString usage() const {
+    return Cli::tr("Usage: microsim-cli calibrate pivot|register --input FILE [--device NAME] [--json FILE]");
+  }
+  void declare(CommandLine& line) const {
+    line.addOptions({input, json, device});
+    line.addWord(QStringLiteral("kind"), Cli::tr("pivot or register"));
+  }
+};
+
+// load → run → report
+int calibrateFromFile(const CommandLine& line, const CalibrateOptions& options) {
+  const QString kind = line.words().value(0);
+  if ((kind != QLatin1String("pivot") && kind != QLatin1String("register")) || !line.isSet(options.input))
+    return line.usageError(Cli::tr("say pivot or register, and give --input FILE"));
+  const bool pivot = kind == QLatin1String("pivot");
+
+  // load
+  const std::optional<CalibrationInput> in = readCalibrationInput(line, line.value(options.input), pivot);
+  if (!in) return kExitFailure;
+
+  // run
+  int exitCode = kExitFailure;
+  QString error;
+  QJsonObject result;
+  if (!pivot) {
+    result = runRegister(in->document, exitCode, error);
+  } else {
+    std::vector<Eigen::Isometry3d> poses;
+    if (!in->isStream || streamPoses(in->stream, in->streamStatus, line.value(options.device), poses, error))
+      result = runPivot(in->document, std::move(poses), exitCode, error);
+  }
+  if (!error.isEmpty()) return line.failure(error);
+
+  // report: the table, the JSON (written whatever the status)
+  printCalibrationResult(line.io().out, result);
+  if (line.isSet(options.json)) {
+    const int written = writeCommandOutput(line, line.value(options.json), QJsonDocument(result).toJson());
+    if (written != kExitOk) return written;
   }
   return exitCode;
+}
+
+}  // namespace
+
+int runCalibrate(const QStringList& args, Streams& io) {
+  return runCommand(QStringLiteral("calibrate"), args, io, &calibrateFromFile);
 }
 
 }  // namespace microsim::cli

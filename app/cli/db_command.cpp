@@ -8,12 +8,12 @@
 //   add-instructor NAME --password-stdin   the password never goes on the command line
 // --db defaults to the desktop app's file; a postgresql://user@host:port/db URL selects
 // a department server. Exit code 0 on success, 1 when the database refused, 2 on usage.
+#include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/history_text.h"
 #include "cli/output_file.h"
-
 #include "microsim/assessment/storage/history_database.h"
 
-#include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -26,65 +26,82 @@ namespace microsim::cli {
 
 namespace {
 
-using assessment::DatabaseError;
 using assessment::DatabaseStatus;
 using assessment::HistoryDatabase;
-using assessment::HistoryError;
 using assessment::Role;
 
-QString describe(const DatabaseStatus& status, const QString& location) {
-  switch (status.error) {
-    case DatabaseError::None:
-      return {};
-    case DatabaseError::CannotCreateFolder:
-      return Cli::tr("cannot create the folder for %1").arg(location);
-    case DatabaseError::CannotOpen:
-      return Cli::tr("cannot open %1").arg(location);
-    case DatabaseError::NotADatabase:
-      return Cli::tr("%1 is not a microsim database or is damaged; it was left untouched").arg(location);
-    case DatabaseError::Locked:
-      return Cli::tr("%1 is locked by another program").arg(location);
-    case DatabaseError::NewerSchema:
-      return Cli::tr("%1 was written by a newer microsim").arg(location);
-    case DatabaseError::MigrationFailed:
-      return Cli::tr("updating %1 failed; it was left as it was").arg(location);
-    case DatabaseError::ReadOnly:
-      return Cli::tr("%1 is read-only; it was left untouched").arg(location);
+struct DbOptions {
+  QCommandLineOption db{QStringLiteral("db"),
+                        Cli::tr("The history: an SQLite <file> or a postgresql://user@host:port/db URL."),
+                        QStringLiteral("file-or-url")};
+  QCommandLineOption group{QStringLiteral("group"), Cli::tr("add-trainee: the trainee's <group>."),
+                           QStringLiteral("group")};
+  QCommandLineOption instructor{QStringLiteral("instructor"),
+                                Cli::tr("export-csv: sign in as instructor <name> (password on stdin)."),
+                                QStringLiteral("name")};
+  QCommandLineOption passwordStdin{QStringLiteral("password-stdin"),
+                                   Cli::tr("add-instructor: read the password from standard input.")};
+  QCommandLineOption json{QStringLiteral("json"), Cli::tr("list-trainees: also write JSON to <file>."),
+                          QStringLiteral("file")};
+
+  QString usage() const {
+    return Cli::tr("Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|"
+                   "list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin "
+                   "[--db FILE_OR_URL]");
   }
-  return {};
+  void declare(CommandLine& line) const;
+};
+
+// the actions in the order the usage lists them; all but two take a file or a name
+const QStringList kDbActions = {QStringLiteral("migrate"),       QStringLiteral("backup"),
+                              QStringLiteral("restore"),       QStringLiteral("export-csv"),
+                              QStringLiteral("list-trainees"), QStringLiteral("add-trainee"),
+                              QStringLiteral("add-instructor")};
+const QStringList kDbActionsWithoutArgument = {QStringLiteral("migrate"), QStringLiteral("list-trainees")};
+
+void DbOptions::declare(CommandLine& line) const {
+  line.addOptions({db, group, instructor, passwordStdin, json});
+  line.addWord(QStringLiteral("action"), kDbActions.join(QStringLiteral(", ")));
+  line.addWord(QStringLiteral("argument"), Cli::tr("the file or name the action takes"));
 }
 
-QString describe(HistoryError error) {
-  switch (error) {
-    case HistoryError::None:
-      return {};
-    case HistoryError::NotOpen:
-      return Cli::tr("the database is not open");
-    case HistoryError::Forbidden:
-      return Cli::tr("not allowed for this user");
-    case HistoryError::NotFound:
-      return Cli::tr("no such person or attempt");
-    case HistoryError::NotInProgress:
-      return Cli::tr("the attempt is already finished");
-    case HistoryError::NameTaken:
-      return Cli::tr("that name is taken");
-    case HistoryError::InvalidInput:
-      return Cli::tr("empty name, or a password shorter than %1 characters")
-          .arg(HistoryDatabase::kMinPasswordLength);
-    case HistoryError::WrongPassword:
-      return Cli::tr("unknown instructor or wrong password");
-    case HistoryError::Unsupported:
-      return Cli::tr("not possible on a PostgreSQL server (use pg_dump and pg_restore there)");
-    case HistoryError::NotABackup:
-      return Cli::tr("the file is not a microsim history");
-    case HistoryError::BackupTooNew:
-      return Cli::tr("the backup was written by a newer microsim");
-    case HistoryError::FileError:
-      return Cli::tr("the file could not be read or written");
-    case HistoryError::QueryFailed:
-      return Cli::tr("the database reported an error");
+// what the command line asks for, checked
+struct DbRequest {
+  QString action;
+  QString argument;  ///< the file or name the action takes; empty for migrate and list-trainees
+  QString location;  ///< the history: --db, else the desktop app's file
+};
+
+std::optional<DbRequest> readDbRequest(const CommandLine& line, const DbOptions& o) {
+  const QStringList words = line.words();
+  DbRequest r{words.value(0), words.value(1), {}};
+  if (r.action.isEmpty()) {
+    line.usageError(Cli::tr("name an action: %1").arg(kDbActions.join(QStringLiteral(", "))));
+    return std::nullopt;
   }
-  return {};
+  if (!kDbActions.contains(r.action)) {
+    line.usageError(Cli::tr("unknown action '%1' (known: %2)").arg(r.action, kDbActions.join(QStringLiteral(", "))));
+    return std::nullopt;
+  }
+  const bool takesArgument = !kDbActionsWithoutArgument.contains(r.action);
+  if (takesArgument && words.size() < 2) {
+    line.usageError(Cli::tr("%1 needs a file or a name after it").arg(r.action));
+    return std::nullopt;
+  }
+  if (!takesArgument && words.size() > 1) {
+    line.usageError(Cli::tr("unexpected argument '%1'").arg(r.argument));
+    return std::nullopt;
+  }
+  if (r.action == QLatin1String("add-instructor") && !line.isSet(o.passwordStdin)) {
+    line.usageError(Cli::tr("add-instructor reads the password from stdin: give --password-stdin"));
+    return std::nullopt;
+  }
+  if (r.action == QLatin1String("export-csv") && !line.isSet(o.instructor)) {
+    line.usageError(Cli::tr("export-csv needs --instructor NAME (password on stdin)"));
+    return std::nullopt;
+  }
+  r.location = line.isSet(o.db) ? line.value(o.db) : HistoryDatabase::defaultPath();
+  return r;
 }
 
 QString roleName(Role r) { return r == Role::Instructor ? Cli::tr("instructor") : Cli::tr("trainee"); }
@@ -98,139 +115,104 @@ QString passwordFromStdin() {
   return QString::fromUtf8(line);
 }
 
-}  // namespace
+// why the action failed, after the command's prefix and the action: kExitFailure
+int actionFailed(const CommandLine& line, const DbRequest& request, const QString& why) {
+  return line.failure(request.action + QStringLiteral(": ") + why);
+}
 
-int runDb(const QStringList& args, Streams& io) {
-  QCommandLineParser parser;
-  const QCommandLineOption db(QStringLiteral("db"),
-                              Cli::tr("The history: an SQLite <file> or a postgresql://user@host:port/db URL."),
-                              QStringLiteral("file-or-url"));
-  const QCommandLineOption group(QStringLiteral("group"), Cli::tr("add-trainee: the trainee's <group>."),
-                                 QStringLiteral("group"));
-  const QCommandLineOption instructor(QStringLiteral("instructor"),
-                                      Cli::tr("export-csv: sign in as instructor <name> (password on stdin)."),
-                                      QStringLiteral("name"));
-  const QCommandLineOption passwordStdin(QStringLiteral("password-stdin"),
-                                         Cli::tr("add-instructor: read the password from standard input."));
-  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("list-trainees: also write JSON to <file>."),
-                                QStringLiteral("file"));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({db, group, instructor, passwordStdin, json, help});
-  parser.addPositionalArgument(QStringLiteral("action"),
-                               Cli::tr("migrate, backup, restore, export-csv, list-trainees, add-trainee or add-instructor"));
-  if (!parser.parse(QStringList{QStringLiteral("db")} + args)) {
-    io.err << "microsim-cli db: " << parser.errorText() << '\n';
-    return kExitUsage;
-  }
-  const QString usage = Cli::tr(
-      "Usage: microsim-cli db migrate|backup FILE|restore FILE|export-csv FILE --instructor NAME|"
-      "list-trainees|add-trainee NAME [--group G]|add-instructor NAME --password-stdin [--db FILE_OR_URL]");
-  if (parser.isSet(help)) {
-    io.out << usage << "\n\n" << parser.helpText().section(QLatin1Char('\n'), 2);
-    return kExitOk;
-  }
+// what the history refused
+int refused(const CommandLine& line, const DbRequest& request, const HistoryDatabase& history) {
+  return actionFailed(line, request, historyErrorText(history.lastError()));
+}
 
-  // every action but migrate and list-trainees takes one argument
-  const QStringList words = parser.positionalArguments();
-  const QString action = words.value(0);
-  const QStringList withArgument = {QStringLiteral("backup"), QStringLiteral("restore"), QStringLiteral("export-csv"),
-                                    QStringLiteral("add-trainee"), QStringLiteral("add-instructor")};
-  const QStringList without = {QStringLiteral("migrate"), QStringLiteral("list-trainees")};
-  const bool known = (withArgument.contains(action) && words.size() == 2) || (without.contains(action) && words.size() == 1);
-  if (!known) {
-    io.err << usage << '\n';
-    return kExitUsage;
-  }
-  if (action == QLatin1String("add-instructor") && !parser.isSet(passwordStdin)) {
-    io.err << Cli::tr("microsim-cli db: add-instructor reads the password from stdin: give --password-stdin") << '\n';
-    return kExitUsage;
-  }
-  if (action == QLatin1String("export-csv") && !parser.isSet(instructor)) {
-    io.err << Cli::tr("microsim-cli db: export-csv needs --instructor NAME (password on stdin)") << '\n';
-    return kExitUsage;
-  }
-  const QString argument = words.value(1);
-
-  const QString location = parser.isSet(db) ? parser.value(db) : HistoryDatabase::defaultPath();
-  HistoryDatabase history;
-  const DatabaseStatus status = history.open(location);
-  if (!status.ok()) {
-    io.err << Cli::tr("microsim-cli db: %1").arg(describe(status, location));
-    if (!status.driverMessage.isEmpty()) io.err << " (" << status.driverMessage << ')';
-    io.err << '\n';
-    return kExitFailure;
-  }
-  const auto failed = [&] {
-    io.err << Cli::tr("microsim-cli db %1: %2").arg(action, describe(history.lastError().error));
-    if (!history.lastError().driverMessage.isEmpty()) io.err << " (" << history.lastError().driverMessage << ')';
-    io.err << '\n';
-    return kExitFailure;
-  };
-
-  if (action == QLatin1String("migrate")) {
-    io.out << Cli::tr("%1: schema version %2").arg(history.path()).arg(status.schemaVersion) << '\n';
-  } else if (action == QLatin1String("backup")) {
-    // said plainly before any copying starts (a server history refuses backup itself, below)
-    if (history.driver() == assessment::Driver::SQLite && QFileInfo::exists(argument)) {
-      io.err << Cli::tr("microsim-cli db backup: %1 exists already; it was left untouched. Choose another name for the "
-                        "backup, or move that file away first.")
-                    .arg(argument)
-             << '\n';
-      return kExitFailure;
-    }
-    if (!history.backup(argument)) return failed();
-    io.out << Cli::tr("backed up %1 to %2").arg(history.path(), argument) << '\n';
-  } else if (action == QLatin1String("restore")) {
-    if (!history.restore(argument)) return failed();
-    io.out << Cli::tr("restored %1 from %2 (schema version %3)").arg(history.path(), argument).arg(history.schemaVersion())
-           << '\n';
-  } else if (action == QLatin1String("export-csv")) {
-    const auto id = history.verifyInstructor(parser.value(instructor), passwordFromStdin());
-    if (!id) return failed();
-    QFile out(argument);
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-      io.err << Cli::tr("microsim-cli db: cannot write %1").arg(argument) << '\n';
-      return kExitFailure;
-    }
-    if (!history.exportCsv({*id, Role::Instructor}, out)) return failed();
-    QString why;
-    if (!closeOutputFile(out, why)) {
-      io.err << Cli::tr("microsim-cli db: cannot write %1").arg(argument) << " (" << why << ")\n";
-      return kExitFailure;
-    }
-    io.out << Cli::tr("wrote %1").arg(argument) << '\n';
-  } else if (action == QLatin1String("list-trainees")) {
-    const QList<assessment::Trainee> people = history.trainees();
-    if (!history.lastError().ok()) return failed();
-    io.out << Cli::tr("id").leftJustified(8) << Cli::tr("role").leftJustified(12) << Cli::tr("group").leftJustified(16)
-           << Cli::tr("name") << '\n';
-    QJsonArray rows;
-    for (const assessment::Trainee& t : people) {
-      io.out << QString::number(t.id).leftJustified(8) << roleName(t.role).leftJustified(12)
-             << t.group.leftJustified(16) << t.name << '\n';
-      rows.append(QJsonObject{{QStringLiteral("id"), t.id},
-                              {QStringLiteral("name"), t.name},
-                              {QStringLiteral("role"), t.role == Role::Instructor ? QStringLiteral("instructor")
-                                                                                  : QStringLiteral("trainee")},
-                              {QStringLiteral("group"), t.group}});
-    }
-    if (parser.isSet(json)) {
-      QString why;
-      if (!writeOutputFile(parser.value(json), QJsonDocument(rows).toJson(), why)) {
-        io.err << Cli::tr("microsim-cli db: cannot write %1").arg(parser.value(json)) << " (" << why << ")\n";
-        return kExitFailure;
-      }
-    }
-  } else if (action == QLatin1String("add-trainee")) {
-    const auto id = history.addTrainee(argument, parser.value(group));
-    if (!id) return failed();
-    io.out << Cli::tr("added trainee %1 (id %2)").arg(argument).arg(*id) << '\n';
-  } else {
-    const auto id = history.addInstructor(argument, passwordFromStdin());
-    if (!id) return failed();
-    io.out << Cli::tr("added instructor %1 (id %2)").arg(argument).arg(*id) << '\n';
-  }
+int backUp(const CommandLine& line, const DbRequest& request, HistoryDatabase& history) {
+  // said plainly before any copying starts (a server history refuses backup itself, below)
+  if (history.driver() == assessment::Driver::SQLite && QFileInfo::exists(request.argument))
+    return actionFailed(line, request,
+                        Cli::tr("%1 exists already; it was left untouched. Choose another name for the "
+                                "backup, or move that file away first.")
+                            .arg(request.argument));
+  if (!history.backup(request.argument)) return refused(line, request, history);
+  line.io().out << Cli::tr("backed up %1 to %2").arg(history.path(), request.argument) << '\n';
   return kExitOk;
 }
+
+int restoreFrom(const CommandLine& line, const DbRequest& request, HistoryDatabase& history) {
+  if (!history.restore(request.argument)) return refused(line, request, history);
+  line.io().out << Cli::tr("restored %1 from %2 (schema version %3)")
+                       .arg(history.path(), request.argument)
+                       .arg(history.schemaVersion())
+                << '\n';
+  return kExitOk;
+}
+
+int exportCsv(const CommandLine& line, const DbRequest& request, const QString& instructor, HistoryDatabase& history) {
+  const auto id = history.verifyInstructor(instructor, passwordFromStdin());
+  if (!id) return refused(line, request, history);
+  QFile out(request.argument);
+  if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate))
+    return line.failure(Cli::tr("cannot write %1: %2").arg(request.argument, out.errorString()));
+  if (!history.exportCsv({*id, Role::Instructor}, out)) return refused(line, request, history);
+  QString why;
+  if (!closeOutputFile(out, why)) return line.failure(Cli::tr("cannot write %1: %2").arg(request.argument, why));
+  line.io().out << Cli::tr("wrote %1").arg(request.argument) << '\n';
+  return kExitOk;
+}
+
+int listTrainees(const CommandLine& line, const DbRequest& request, const QString& jsonPath, HistoryDatabase& history) {
+  const QList<assessment::Trainee> people = history.trainees();
+  if (!history.lastError().ok()) return refused(line, request, history);
+  QTextStream& out = line.io().out;
+  out << Cli::tr("id").leftJustified(8) << Cli::tr("role").leftJustified(12) << Cli::tr("group").leftJustified(16)
+      << Cli::tr("name") << '\n';
+  QJsonArray rows;
+  for (const assessment::Trainee& t : people) {
+    out << QString::number(t.id).leftJustified(8) << roleName(t.role).leftJustified(12) << t.group.leftJustified(16)
+        << t.name << '\n';
+    rows.append(QJsonObject{
+        {QStringLiteral("id"), t.id},
+        {QStringLiteral("name"), t.name},
+        {QStringLiteral("role"), t.role == Role::Instructor ? QStringLiteral("instructor") : QStringLiteral("trainee")},
+        {QStringLiteral("group"), t.group}});
+  }
+  if (jsonPath.isEmpty()) return kExitOk;
+  return writeCommandOutput(line, jsonPath, QJsonDocument(rows).toJson());
+}
+
+// load → run → report
+int manageHistory(const CommandLine& line, const DbOptions& options) {
+  const std::optional<DbRequest> request = readDbRequest(line, options);
+  if (!request) return kExitUsage;
+
+  // load: the history, migrated
+  HistoryDatabase history;
+  const DatabaseStatus status = history.open(request->location);
+  if (!status.ok()) return line.failure(databaseErrorText(status, request->location));
+
+  // run the action and report
+  const QString& action = request->action;
+  if (action == QLatin1String("migrate")) {
+    line.io().out << Cli::tr("%1: schema version %2").arg(history.path()).arg(status.schemaVersion) << '\n';
+    return kExitOk;
+  }
+  if (action == QLatin1String("backup")) return backUp(line, *request, history);
+  if (action == QLatin1String("restore")) return restoreFrom(line, *request, history);
+  if (action == QLatin1String("export-csv")) return exportCsv(line, *request, line.value(options.instructor), history);
+  if (action == QLatin1String("list-trainees")) return listTrainees(line, *request, line.value(options.json), history);
+  const std::optional<qint64> id = action == QLatin1String("add-trainee")
+                                       ? history.addTrainee(request->argument, line.value(options.group))
+                                       : history.addInstructor(request->argument, passwordFromStdin());
+  if (!id) return refused(line, *request, history);
+  line.io().out << (action == QLatin1String("add-trainee") ? Cli::tr("added trainee %1 (id %2)")
+                                                    : Cli::tr("added instructor %1 (id %2)"))
+                .arg(request->argument)
+                .arg(*id)
+         << '\n';
+  return kExitOk;
+}
+
+}  // namespace
+
+int runDb(const QStringList& args, Streams& io) { return runCommand(QStringLiteral("db"), args, io, &manageHistory); }
 
 }  // namespace microsim::cli

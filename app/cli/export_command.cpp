@@ -2,13 +2,10 @@
 // the solver sees it once the scene is built — nodes with masses, links with rest length,
 // stiffness and alive flag, fixed nodes, control nodes with their targets, surface
 // triangles and where each declared object landed. Prints a summary; --json writes it all.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/output_file.h"
-
 #include "cli/spring_scene_input.h"
-
-#include <QCommandLineParser>
-#include <QFile>
 
 #include <nlohmann/json.hpp>
 
@@ -72,42 +69,24 @@ nlohmann::json networkJson(const sim::SpringScene& scene) {
   return doc;
 }
 
-}  // namespace
+struct ExportOptions {
+  SceneInputOptions input;
+  QCommandLineOption json{QStringLiteral("json"), Cli::tr("Write the network as JSON to <file>."), QStringLiteral("file")};
 
-int runExport(const QStringList& args, Streams& io) {
-  QCommandLineParser parser;
-  const SceneInputOptions input;
-  const QCommandLineOption json(QStringLiteral("json"),
-                                Cli::tr("Write the network as JSON to <file>."),
-                                QStringLiteral("file"));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")},
-                                Cli::tr("Show this help."));
-  input.addTo(parser);
-  parser.addOptions({json, help});
-  const QString prefix = QStringLiteral("microsim-cli export: ");
-  if (!parser.parse(QStringList{QStringLiteral("export")} + args)) {
-    io.err << prefix << parser.errorText() << '\n';
-    return kExitUsage;
-  }
-  if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli export --scene FILE | --lattice N [--json FILE]")
-           << "\n\n"
-           << parser.helpText().section(QLatin1Char('\n'), 2);
-    return kExitOk;
-  }
-  if (!parser.positionalArguments().isEmpty()) {
-    io.err << prefix
-           << Cli::tr("unexpected argument '%1'").arg(parser.positionalArguments().front()) << '\n';
-    return kExitUsage;
-  }
+  QString usage() const { return Cli::tr("Usage: microsim-cli export --scene FILE | --lattice N [--json FILE]"); }
+  void declare(CommandLine& line) const { line.addOptions(input.all() << json); }
+};
 
+// load → report
+int exportNetwork(const CommandLine& line, const ExportOptions& options) {
+  // load
   int code = kExitOk;
-  const std::optional<sim::SpringScene> scene =
-      readSceneInput(parser, input, QStringLiteral("export"), io, code);
+  const std::optional<sim::SpringScene> scene = readSceneInput(line, options.input, code);
   if (!scene) return code;
 
+  // report: the summary, the whole network as JSON
   const sim::SpringModel& m = scene->model;
-  QTextStream& out = io.out;
+  QTextStream& out = line.io().out;
   const auto row = [&out](const QString& label, long long value) {
     out << "  " << label.leftJustified(12) << value << '\n';
   };
@@ -117,16 +96,15 @@ int runExport(const QStringList& args, Streams& io) {
   row(Cli::tr("fixed"), static_cast<long long>(m.fixedNodes().size()));
   row(Cli::tr("controls"), scene->controls.size());
   row(Cli::tr("triangles"), static_cast<long long>(m.triangles().size()));
+  if (!line.isSet(options.json)) return kExitOk;
+  return writeCommandOutput(line, line.value(options.json),
+                            QByteArray::fromStdString(networkJson(*scene).dump() + "\n"));
+}
 
-  if (parser.isSet(json)) {
-    QString why;
-    if (!writeOutputFile(parser.value(json), QByteArray::fromStdString(networkJson(*scene).dump() + "\n"), why)) {
-      io.err << prefix << Cli::tr("cannot write %1: %2").arg(parser.value(json), why)
-             << '\n';
-      return kExitFailure;
-    }
-  }
-  return kExitOk;
+}  // namespace
+
+int runExport(const QStringList& args, Streams& io) {
+  return runCommand(QStringLiteral("export"), args, io, &exportNetwork);
 }
 
 }  // namespace microsim::cli

@@ -28,4 +28,10 @@ bool writeOutputFile(const QString& path, const QByteArray& bytes, QString& erro
   return closeOutputFile(file, error);
 }
 
+int writeCommandOutput(const CommandLine& line, const QString& path, const QByteArray& bytes) {
+  QString why;
+  if (!writeOutputFile(path, bytes, why)) return line.failure(Cli::tr("cannot write %1: %2").arg(path, why));
+  return kExitOk;
+}
+
 }  // namespace microsim::cli

@@ -78,28 +78,25 @@ QString describeSceneError(const sim::SceneError& error) {
   return text;
 }
 
-std::optional<sim::SpringScene> readSceneInput(const QCommandLineParser& parser,
-                                               const SceneInputOptions& options,
-                                               const QString& command, Streams& io, int& exitCode) {
-  const QString prefix = QStringLiteral("microsim-cli %1: ").arg(command);
+std::optional<sim::SpringScene> readSceneInput(const CommandLine& line, const SceneInputOptions& options,
+                                               int& exitCode) {
   exitCode = kExitUsage;
-  const bool haveScene = parser.isSet(options.scene);
-  const bool haveLattice = parser.isSet(options.lattice);
+  const bool haveScene = line.isSet(options.scene);
+  const bool haveLattice = line.isSet(options.lattice);
   if (haveScene == haveLattice) {
-    io.err << prefix << Cli::tr("give exactly one of --scene FILE and --lattice N") << '\n';
+    line.usageError(Cli::tr("give exactly one of --scene FILE and --lattice N"));
     return std::nullopt;
   }
-  if (parser.isSet(options.stiffness) && !haveLattice) {
-    io.err << prefix << Cli::tr("--stiffness applies to --lattice only") << '\n';
+  if (line.isSet(options.stiffness) && !haveLattice) {
+    line.usageError(Cli::tr("--stiffness applies to --lattice only"));
     return std::nullopt;
   }
 
   // a scene file: its errors are the file's fault, not the command line's
   if (haveScene) {
-    sim::SceneLoad load = sim::loadSpringScene(parser.value(options.scene).toStdString());
+    sim::SceneLoad load = sim::loadSpringScene(line.value(options.scene).toStdString());
     if (auto* e = std::get_if<sim::SceneError>(&load)) {
-      io.err << prefix << describeSceneError(*e) << '\n';
-      exitCode = kExitFailure;
+      exitCode = line.failure(describeSceneError(*e));
       return std::nullopt;
     }
     exitCode = kExitOk;
@@ -108,22 +105,16 @@ std::optional<sim::SpringScene> readSceneInput(const QCommandLineParser& parser,
 
   // the paper's lattice protocol
   bool ok = false;
-  const int n = parser.value(options.lattice).toInt(&ok);
+  const int n = line.value(options.lattice).toInt(&ok);
   if (!ok || n < 2 || n > 200) {
-    io.err << prefix
-           << Cli::tr("--lattice wants a whole number from 2 to 200, not '%1'")
-                  .arg(parser.value(options.lattice))
-           << '\n';
+    line.usageError(Cli::tr("--lattice wants a whole number from 2 to 200, not '%1'").arg(line.value(options.lattice)));
     return std::nullopt;
   }
   double k = 10.0;
-  if (parser.isSet(options.stiffness)) {
-    k = parser.value(options.stiffness).toDouble(&ok);
+  if (line.isSet(options.stiffness)) {
+    k = line.value(options.stiffness).toDouble(&ok);
     if (!ok || !(k >= 0.0) || !std::isfinite(k)) {
-      io.err << prefix
-             << Cli::tr("--stiffness wants a number ≥ 0, not '%1'")
-                    .arg(parser.value(options.stiffness))
-             << '\n';
+      line.usageError(Cli::tr("--stiffness wants a number ≥ 0, not '%1'").arg(line.value(options.stiffness)));
       return std::nullopt;
     }
   }

@@ -2,12 +2,9 @@
 // What `solve` and `export` both read: a spring network from `--scene FILE` or the
 // paper's benchmark box from `--lattice N` (bottom face fixed, middle node of the top
 // face displaced +1 mm in z), and the words for a scene file's errors.
-#include "cli/cli.h"
+#include "cli/command_line.h"
 
 #include "microsim/sim/scene/spring_scene.h"
-
-#include <QCommandLineOption>
-#include <QCommandLineParser>
 
 #include <optional>
 
@@ -25,14 +22,13 @@ struct SceneInputOptions {
                                Cli::tr("Link stiffness of the --lattice box in g/s² (default 10)."),
                                QStringLiteral("k")};
 
-  void addTo(QCommandLineParser& parser) const { parser.addOptions({scene, lattice, stiffness}); }
+  QList<QCommandLineOption> all() const { return {scene, lattice, stiffness}; }
 };
 
-/// The scene named on the command line, or nullopt after printing why to io.err;
+/// The scene named on the command line, or nullopt after printing why through `line`;
 /// `exitCode` is then kExitUsage (bad arguments) or kExitFailure (bad scene file).
-std::optional<sim::SpringScene> readSceneInput(const QCommandLineParser& parser,
-                                               const SceneInputOptions& options,
-                                               const QString& command, Streams& io, int& exitCode);
+std::optional<sim::SpringScene> readSceneInput(const CommandLine& line, const SceneInputOptions& options,
+                                               int& exitCode);
 
 /// One line describing a scene error: "FILE:LINE:COLUMN: what is wrong (field PATH)".
 QString describeSceneError(const sim::SceneError& error);

@@ -14,15 +14,14 @@
 //    "channels": {"Grip": {"received": 10, "last": 0.5}},
 //    "rejected": {"count": 3, "reasons": {"bad_crc": 1, "too_fast": 2, ...every reason...}}}
 // rate_hz = (received − 1) / (last time − first time), from the messages' timestamps.
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/output_file.h"
 
 #include "tracking/igtl_client.h"
 #include "tracking/pose_stream.h"
 
-#include <QCommandLineParser>
 #include <QEventLoop>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -61,157 +60,177 @@ QJsonArray rowMajor(const Eigen::Matrix4d& m) {
   return a;
 }
 
-}  // namespace
+struct TrackOptions {
+  QCommandLineOption igtl{QStringLiteral("igtl"),
+                          Cli::tr("OpenIGTLink server to read, HOST:PORT (port 18944 by default)."),
+                          QStringLiteral("host:port")};
+  QCommandLineOption duration{QStringLiteral("duration"), Cli::tr("Record for <seconds> (default 10)."),
+                              QStringLiteral("seconds"), QStringLiteral("10")};
+  QCommandLineOption json{QStringLiteral("json"), Cli::tr("Write the record as JSON to <file>."), QStringLiteral("file")};
+  QCommandLineOption record{QStringLiteral("record"),
+                            Cli::tr("Write every accepted pose and channel value as a tracker stream to <file>."),
+                            QStringLiteral("file")};
+  QCommandLineOption once{QStringLiteral("once"), Cli::tr("Stop when the server closes the link (no reconnection).")};
+  QCommandLineOption maxSpeed{QStringLiteral("max-speed"), Cli::tr("Refuse poses moving faster than <mm/s> (default 2000)."),
+                              QStringLiteral("mm/s"), QStringLiteral("2000")};
 
-int runTrack(const QStringList& args, Streams& io) {
-  QCommandLineParser parser;
-  const QCommandLineOption igtl(QStringLiteral("igtl"), Cli::tr("OpenIGTLink server to read, HOST:PORT (port 18944 by default)."),
-                                QStringLiteral("host:port"));
-  const QCommandLineOption duration(QStringLiteral("duration"), Cli::tr("Record for <seconds> (default 10)."),
-                                    QStringLiteral("seconds"), QStringLiteral("10"));
-  const QCommandLineOption json(QStringLiteral("json"), Cli::tr("Write the record as JSON to <file>."), QStringLiteral("file"));
-  const QCommandLineOption record(QStringLiteral("record"),
-                                  Cli::tr("Write every accepted pose and channel value as a tracker stream to <file>."),
-                                  QStringLiteral("file"));
-  const QCommandLineOption once(QStringLiteral("once"), Cli::tr("Stop when the server closes the link (no reconnection)."));
-  const QCommandLineOption maxSpeed(QStringLiteral("max-speed"), Cli::tr("Refuse poses moving faster than <mm/s> (default 2000)."),
-                                    QStringLiteral("mm/s"), QStringLiteral("2000"));
-  const QCommandLineOption help(QStringList{QStringLiteral("h"), QStringLiteral("help")}, Cli::tr("Show this help."));
-  parser.addOptions({igtl, duration, json, record, once, maxSpeed, help});
-  if (!parser.parse(QStringList{QStringLiteral("track")} + args)) {
-    io.err << "microsim-cli track: " << parser.errorText() << '\n';
-    return kExitUsage;
+  QString usage() const {
+    return Cli::tr("Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] "
+                   "[--once] [--max-speed MM_S]");
   }
-  if (parser.isSet(help)) {
-    io.out << Cli::tr("Usage: microsim-cli track --igtl HOST:PORT [--duration S] [--json FILE] [--record FILE] [--once] [--max-speed MM_S]")
-           << "\n\n"
-           << parser.helpText().section(QLatin1Char('\n'), 2);
-    return kExitOk;
-  }
+  void declare(CommandLine& line) const { line.addOptions({igtl, duration, json, record, once, maxSpeed}); }
+};
 
-  // the link and its limits
-  tracking::IgtlClientConfig config;
-  if (!parser.isSet(igtl) || !tracking::parseHostPort(parser.value(igtl), config.host, config.port)) {
-    io.err << Cli::tr("microsim-cli track: give the server as --igtl HOST:PORT") << '\n';
-    return kExitUsage;
+// what the command line asks for, checked
+struct TrackRequest {
+  tracking::IgtlClientConfig link;
+  double seconds = 10.0;
+  QString record;  ///< the tracker stream file; empty: none
+  QString json;
+};
+
+std::optional<TrackRequest> readTrackRequest(const CommandLine& line, const TrackOptions& o) {
+  TrackRequest r;
+  if (!line.isSet(o.igtl) || !tracking::parseHostPort(line.value(o.igtl), r.link.host, r.link.port)) {
+    line.usageError(Cli::tr("give the server as --igtl HOST:PORT"));
+    return std::nullopt;
   }
   bool okDuration = false, okSpeed = false;
-  const double seconds = parser.value(duration).toDouble(&okDuration);
-  config.limits.maxSpeed = parser.value(maxSpeed).toDouble(&okSpeed);
-  if (!okDuration || !(seconds > 0.0) || !okSpeed || !(config.limits.maxSpeed > 0.0)) {
-    io.err << Cli::tr("microsim-cli track: --duration and --max-speed take positive numbers") << '\n';
-    return kExitUsage;
+  r.seconds = line.value(o.duration).toDouble(&okDuration);
+  r.link.limits.maxSpeed = line.value(o.maxSpeed).toDouble(&okSpeed);
+  if (!okDuration || !(r.seconds > 0.0) || !okSpeed || !(r.link.limits.maxSpeed > 0.0)) {
+    line.usageError(Cli::tr("--duration and --max-speed take positive numbers"));
+    return std::nullopt;
   }
-  config.reconnect = !parser.isSet(once);
+  r.link.reconnect = !line.isSet(o.once);
+  r.record = line.value(o.record);
+  r.json = line.value(o.json);
+  return r;
+}
 
-  // the stream file before the link, so that a bad path fails at once
-  tracking::PoseStreamWriter writer;
-  if (parser.isSet(record) && !writer.open(parser.value(record)).ok()) {
-    io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(record)) << '\n';
-    return kExitFailure;
-  }
-  QEventLoop loop;
-  bool writeFailed = false;
-  const auto keep = [&writer, &writeFailed, &loop](const tracking::StreamSample& sample) {
-    if (!writer.isOpen() || writeFailed) return;
-    writeFailed = !writer.append(sample).ok();
-    if (writeFailed) loop.quit();
-  };
-
-  // record every accepted pose and channel value on this thread
+// what arrived: per device and channel, and the link's own count of connections and refusals
+struct TrackRecord {
   std::map<std::string, DeviceRecord> devices;
   std::map<std::string, ChannelRecord> channels;
+  tracking::TrackerStatus status;
+  bool writeFailed = false;  ///< the stream file stopped taking samples (disk full)
+};
+
+// records every accepted pose and channel value on this thread until the time is up (or,
+// without reconnection, the link goes down, or the stream file fails)
+TrackRecord recordLink(const TrackRequest& request, tracking::PoseStreamWriter& writer) {
+  TrackRecord rec;
+  QEventLoop loop;
+  const auto keep = [&writer, &rec, &loop](const tracking::StreamSample& sample) {
+    if (!writer.isOpen() || rec.writeFailed) return;
+    rec.writeFailed = !writer.append(sample).ok();
+    if (rec.writeFailed) loop.quit();
+  };
   QObject receiver;
-  tracking::IgtlClient client(config);
-  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&devices, &keep](const RawPose& pose) {
+  tracking::IgtlClient client(request.link);
+  QObject::connect(&client, &tracking::TrackerSource::poseAccepted, &receiver, [&rec, &keep](const RawPose& pose) {
     keep(pose);
-    DeviceRecord& d = devices[pose.device];
+    DeviceRecord& d = rec.devices[pose.device];
     if (d.received == 0) d.firstTime = pose.time;
     ++d.received;
     d.last = pose.matrix;
     d.lastTime = pose.time;
   });
-  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&channels, &keep](const ChannelValue& v) {
+  QObject::connect(&client, &tracking::TrackerSource::channelAccepted, &receiver, [&rec, &keep](const ChannelValue& v) {
     keep(v);
-    ChannelRecord& c = channels[v.channel];
+    ChannelRecord& c = rec.channels[v.channel];
     ++c.received;
     c.last = v.value;
   });
-  if (parser.isSet(once))
+  if (!request.link.reconnect)
     QObject::connect(&client, &tracking::TrackerSource::linkDown, &receiver, [&loop] { loop.quit(); });
-  QTimer::singleShot(static_cast<int>(seconds * 1000.0), &receiver, [&loop] { loop.quit(); });
+  QTimer::singleShot(static_cast<int>(request.seconds * 1000.0), &receiver, [&loop] { loop.quit(); });
   client.start();
   loop.exec();
   client.stop();
   // signals queued before stop() returned
   QCoreApplication::sendPostedEvents(&receiver);
-  const tracking::TrackerStatus status = client.status();
+  rec.status = client.status();
+  return rec;
+}
 
-  if (status.connections == 0) {
-    if (writer.isOpen()) writer.finish();
-    io.err << Cli::tr("microsim-cli track: could not connect to %1:%2: %3")
-                  .arg(config.host)
-                  .arg(config.port)
-                  .arg(status.lastError)
-           << '\n';
-    return kExitFailure;
+void printTrackRecord(QTextStream& out, const TrackRequest& request, const TrackRecord& rec) {
+  out << Cli::tr("%1 connection(s) to %2:%3").arg(rec.status.connections).arg(request.link.host).arg(request.link.port)
+      << '\n';
+  out << Cli::tr("device              received   rate (Hz)   last position (mm)") << '\n';
+  for (const auto& [name, d] : rec.devices) {
+    out << QString::fromStdString(name).leftJustified(20) << QString::number(d.received).rightJustified(8)
+        << QString::number(d.rateHz(), 'f', 1).rightJustified(12) << "   " << d.last(0, 3) << ' ' << d.last(1, 3) << ' '
+        << d.last(2, 3) << '\n';
   }
-
-  // the table
-  io.out << Cli::tr("%1 connection(s) to %2:%3").arg(status.connections).arg(config.host).arg(config.port) << '\n';
-  io.out << Cli::tr("device              received   rate (Hz)   last position (mm)") << '\n';
-  for (const auto& [name, d] : devices) {
-    io.out << QString::fromStdString(name).leftJustified(20) << QString::number(d.received).rightJustified(8)
-           << QString::number(d.rateHz(), 'f', 1).rightJustified(12) << "   " << d.last(0, 3) << ' ' << d.last(1, 3)
-           << ' ' << d.last(2, 3) << '\n';
-  }
-  for (const auto& [name, c] : channels)
-    io.out << QString::fromStdString(name).leftJustified(20) << QString::number(c.received).rightJustified(8)
-           << "            " << c.last << '\n';
-  io.out << Cli::tr("rejected: %1").arg(status.rejected.total()) << '\n';
+  for (const auto& [name, c] : rec.channels)
+    out << QString::fromStdString(name).leftJustified(20) << QString::number(c.received).rightJustified(8)
+        << "            " << c.last << '\n';
+  out << Cli::tr("rejected: %1").arg(rec.status.rejected.total()) << '\n';
   for (int r = 0; r < tracking::kRejectionCount; ++r) {
     const auto reason = static_cast<tracking::Rejection>(r);
-    if (status.rejected[reason] > 0)
-      io.out << "  " << QString::fromLatin1(tracking::rejectionKey(reason)).leftJustified(18) << status.rejected[reason] << '\n';
+    if (rec.status.rejected[reason] > 0)
+      out << "  " << QString::fromLatin1(tracking::rejectionKey(reason)).leftJustified(18) << rec.status.rejected[reason]
+          << '\n';
+  }
+}
+
+QJsonDocument trackRecordJson(const TrackRequest& request, const TrackRecord& rec) {
+  QJsonObject devs;
+  for (const auto& [name, d] : rec.devices)
+    devs.insert(QString::fromStdString(name), QJsonObject{{QStringLiteral("received"), static_cast<qint64>(d.received)},
+                                                          {QStringLiteral("last"), rowMajor(d.last)},
+                                                          {QStringLiteral("rate_hz"), d.rateHz()}});
+  QJsonObject chans;
+  for (const auto& [name, c] : rec.channels)
+    chans.insert(QString::fromStdString(name), QJsonObject{{QStringLiteral("received"), static_cast<qint64>(c.received)},
+                                                           {QStringLiteral("last"), c.last}});
+  QJsonObject reasons;
+  for (int r = 0; r < tracking::kRejectionCount; ++r) {
+    const auto reason = static_cast<tracking::Rejection>(r);
+    reasons.insert(QLatin1String(tracking::rejectionKey(reason)), static_cast<qint64>(rec.status.rejected[reason]));
+  }
+  const QJsonObject rejected{{QStringLiteral("count"), static_cast<qint64>(rec.status.rejected.total())},
+                             {QStringLiteral("reasons"), reasons}};
+  return QJsonDocument(QJsonObject{{QStringLiteral("host"), request.link.host},
+                                   {QStringLiteral("port"), request.link.port},
+                                   {QStringLiteral("connections"), static_cast<qint64>(rec.status.connections)},
+                                   {QStringLiteral("devices"), devs},
+                                   {QStringLiteral("channels"), chans},
+                                   {QStringLiteral("rejected"), rejected}});
+}
+
+// load → run → report
+int recordTracker(const CommandLine& line, const TrackOptions& options) {
+  const std::optional<TrackRequest> request = readTrackRequest(line, options);
+  if (!request) return kExitUsage;
+
+  // load: the stream file before the link, so that a bad path fails at once
+  tracking::PoseStreamWriter writer;
+  const auto cannotRecord = [&] { return line.failure(Cli::tr("cannot write %1").arg(request->record)); };
+  if (!request->record.isEmpty() && !writer.open(request->record).ok()) return cannotRecord();
+
+  // run
+  const TrackRecord rec = recordLink(*request, writer);
+  if (rec.status.connections == 0) {
+    if (writer.isOpen()) writer.finish();
+    return line.failure(Cli::tr("could not connect to %1:%2: %3")
+                            .arg(request->link.host)
+                            .arg(request->link.port)
+                            .arg(rec.status.lastError));
   }
 
-  if (writeFailed || (writer.isOpen() && !writer.finish().ok())) {
-    io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(record)) << '\n';
-    return kExitFailure;
-  }
+  // report: the table, the stream file's end, the JSON
+  printTrackRecord(line.io().out, *request, rec);
+  if (rec.writeFailed || (writer.isOpen() && !writer.finish().ok())) return cannotRecord();
+  if (request->json.isEmpty()) return kExitOk;
+  return writeCommandOutput(line, request->json, trackRecordJson(*request, rec).toJson());
+}
 
-  // the JSON
-  if (parser.isSet(json)) {
-    QJsonObject devs;
-    for (const auto& [name, d] : devices)
-      devs.insert(QString::fromStdString(name),
-                  QJsonObject{{QStringLiteral("received"), static_cast<qint64>(d.received)},
-                              {QStringLiteral("last"), rowMajor(d.last)},
-                              {QStringLiteral("rate_hz"), d.rateHz()}});
-    QJsonObject chans;
-    for (const auto& [name, c] : channels)
-      chans.insert(QString::fromStdString(name), QJsonObject{{QStringLiteral("received"), static_cast<qint64>(c.received)},
-                                                             {QStringLiteral("last"), c.last}});
-    QJsonObject reasons;
-    for (int r = 0; r < tracking::kRejectionCount; ++r) {
-      const auto reason = static_cast<tracking::Rejection>(r);
-      reasons.insert(QLatin1String(tracking::rejectionKey(reason)), static_cast<qint64>(status.rejected[reason]));
-    }
-    const QJsonObject root{
-        {QStringLiteral("host"), config.host},
-        {QStringLiteral("port"), config.port},
-        {QStringLiteral("connections"), static_cast<qint64>(status.connections)},
-        {QStringLiteral("devices"), devs},
-        {QStringLiteral("channels"), chans},
-        {QStringLiteral("rejected"), QJsonObject{{QStringLiteral("count"), static_cast<qint64>(status.rejected.total())},
-                                                 {QStringLiteral("reasons"), reasons}}}};
-    QString why;
-    if (!writeOutputFile(parser.value(json), QJsonDocument(root).toJson(), why)) {
-      io.err << Cli::tr("microsim-cli track: cannot write %1").arg(parser.value(json)) << '\n';
-      return kExitFailure;
-    }
-  }
-  return kExitOk;
+}  // namespace
+
+int runTrack(const QStringList& args, Streams& io) {
+  return runCommand(QStringLiteral("track"), args, io, &recordTracker);
 }
 
 }  // namespace microsim::cli

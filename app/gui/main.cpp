@@ -5,6 +5,7 @@
 #include "gui/main_window.h"
 #include "gui/render/surface_format.h"
 #include "gui/screenshots.h"
+#include "gui/start_check.h"
 #include "i18n/translations.h"
 
 #include "microsim/assessment/storage/history_database.h"
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
   QCoreApplication::setOrganizationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationVersion(QStringLiteral(MICROSIM_VERSION));
+  // the installed microsim.desktop: desktops match the window to its entry and icon
+  QGuiApplication::setDesktopFileName(QStringLiteral("microsim"));
 
   microsim::i18n::installTranslations(app, microsim::i18n::languageFromSettings());
 
@@ -38,8 +41,13 @@ int main(int argc, char** argv) {
       QStringLiteral("database"),
       QApplication::translate("main", "Use the SQLite history file <file> instead of the default."),
       QApplication::translate("main", "file"));
+  const QCommandLineOption checkStart(
+      QStringLiteral("check-start"),
+      QApplication::translate("main", "Start as usual, quit once the main window is drawn; exit 1 if it was not, "
+                                      "or a lesson or the history could not be read."));
   parser.addOption(screenshot);
   parser.addOption(database);
+  parser.addOption(checkStart);
   parser.process(app);
 
   if (parser.isSet(screenshot)) {
@@ -63,5 +71,6 @@ int main(int argc, char** argv) {
 
   microsim::gui::MainWindow window(&history, status, databasePath);
   window.show();
+  if (parser.isSet(checkStart)) return microsim::gui::checkStart(window, status, databasePath);
   return QApplication::exec();
 }

@@ -1,5 +1,7 @@
 #include "gui/simulation_runner.h"
 
+#include "microsim/sim/scene/recorded_scene.h"
+
 #include <pthread.h>
 
 #include <algorithm>
@@ -118,9 +120,9 @@ void SimulationRunner::openRecording() {
   const std::lock_guard lock(resultsMutex_);
   recordingStatus_ = {};
   if (recordingPath_.isEmpty() || writer_.isOpen()) return;
-  // the metadata names the scene, as `microsim-cli run` expects no more of it
-  const std::string meta = R"({"scene": ")" + scenePath_.toStdString() + R"("})";
-  recordingStatus_ = writer_.open(recordingPath_.toStdString(), meta);
+  // the header names the scene (absolute, with its digest), so that `microsim-cli run` and
+  // `score` replay the file on the scene it was made on without being told
+  recordingStatus_ = writer_.open(recordingPath_.toStdString(), sim::recordScene(scenePath_.toStdString()), {});
 }
 
 void SimulationRunner::finishRecording() {

@@ -1,6 +1,7 @@
 #include "lesson/lesson.h"
 
-#include <QCoreApplication>
+#include "lesson/resource_directory.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -350,13 +351,6 @@ std::vector<Lesson> loadLessons(const QString& directory, std::vector<LessonErro
   return lessons;
 }
 
-QString lessonsDirectory() {
-  const QString env = qEnvironmentVariable("MICROSIM_RESOURCES");
-  if (!env.isEmpty()) return QDir(env).filePath(QStringLiteral("lessons"));
-  const QDir app(QCoreApplication::applicationDirPath());
-  for (const QString& rel : {QStringLiteral("../share/microsim/lessons"), QStringLiteral("../resources/lessons")})
-    if (QFileInfo(app.filePath(rel)).isDir()) return QDir::cleanPath(app.filePath(rel));
-  return QStringLiteral(MICROSIM_RESOURCES_DIR "/lessons");
-}
+QString lessonsDirectory() { return QDir(resourceDirectory()).filePath(QStringLiteral("lessons")); }
 
 }  // namespace microsim::lesson

@@ -96,8 +96,7 @@ std::variant<Lesson, LessonError> loadLesson(const QString& path);
 /// Every *.json lesson in `directory`, sorted by file name; files that fail go to `errors`.
 std::vector<Lesson> loadLessons(const QString& directory, std::vector<LessonError>* errors = nullptr);
 
-/// The shipped lessons folder: $MICROSIM_RESOURCES/lessons, else the first of
-/// <app dir>/../share/microsim/lessons, <app dir>/../resources/lessons and the source tree's.
+/// The shipped lessons folder, `lessons` in resourceDirectory() (lesson/resource_directory.h).
 QString lessonsDirectory();
 
 }  // namespace microsim::lesson

@@ -55,8 +55,8 @@ int fuzzRecording(const std::uint8_t* data, std::size_t size) {
   const std::vector<std::uint8_t> again = sim::encodeRecording(recording);
   sim::Recording decoded;
   if (!sim::decodeRecording(again, decoded).ok()) propertyBroken("recording", "re-encoding is unreadable");
-  if (decoded.frames != recording.frames || decoded.metadata != recording.metadata) {
-    propertyBroken("recording", "round trip changed the frames");
+  if (decoded.frames != recording.frames || decoded.metadata != recording.metadata || decoded.scene != recording.scene) {
+    propertyBroken("recording", "round trip changed the frames, the metadata or the scene");
   }
   return 0;
 }

@@ -8,11 +8,15 @@
 
 namespace microsim::sim::collide {
 
-TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParams& params)
-    : tissue_(tissue), params_(params) {
+double defaultContactStiffness(const SpringModel& tissue) {
   double kMax = 0.0;
   for (const Link& link : tissue.links()) kMax = std::max(kMax, link.k);
-  stiffness_ = params.stiffness > 0.0 ? params.stiffness : 20.0 * kMax;
+  return 20.0 * kMax;
+}
+
+TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParams& params)
+    : tissue_(tissue), params_(params) {
+  stiffness_ = params.stiffness > 0.0 ? params.stiffness : defaultContactStiffness(tissue);
 
   // the nodes on the surface, and the mean edge of its faces (the grid's cell)
   std::vector<std::uint8_t> onSurface(static_cast<std::size_t>(tissue.nodeCount()), 0);

@@ -40,6 +40,15 @@ class Decoder {
  public:
   explicit Decoder(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
   bool has(std::size_t n) const { return bytes_.size() - pos_ >= n; }
+  // a length-prefixed run of bytes; false when the input ends first
+  bool getText(std::string& out) {
+    if (!has(4)) return false;
+    const auto length = get<std::uint32_t>();
+    if (!has(length)) return false;
+    out.assign(reinterpret_cast<const char*>(bytes_.data() + pos_), length);
+    pos_ += length;
+    return true;
+  }
   template <class T>
   T get() {
     T value;
@@ -55,13 +64,20 @@ class Decoder {
   std::size_t pos_ = 0;
 };
 
-std::vector<std::uint8_t> encodeHeader(const std::string& metadata) {
+// a length-prefixed run of bytes (u32 length, then the bytes)
+void putText(std::vector<std::uint8_t>& out, const std::string& text) {
+  Encoder(out).put<std::uint32_t>(static_cast<std::uint32_t>(text.size()));
+  out.insert(out.end(), text.begin(), text.end());
+}
+
+std::vector<std::uint8_t> encodeHeader(const RecordedScene& scene, const std::string& metadata) {
   std::vector<std::uint8_t> out(kMagic.begin(), kMagic.end());
   Encoder e(out);
   e.put<std::uint16_t>(kRecordingVersion);
   e.put<std::uint16_t>(kHandCount);
-  e.put<std::uint32_t>(static_cast<std::uint32_t>(metadata.size()));
-  out.insert(out.end(), metadata.begin(), metadata.end());
+  putText(out, scene.path);
+  e.put<std::uint64_t>(scene.digest);
+  putText(out, metadata);
   return out;
 }
 
@@ -123,7 +139,7 @@ std::uint32_t crc32(std::span<const std::uint8_t> bytes, std::uint32_t crc) {
 }
 
 std::vector<std::uint8_t> encodeRecording(const Recording& recording) {
-  std::vector<std::uint8_t> out = encodeHeader(recording.metadata);
+  std::vector<std::uint8_t> out = encodeHeader(recording.scene, recording.metadata);
   out.reserve(out.size() + recording.frames.size() * kFrameBytes + kEndBytes);
   Encoder e(out);
   for (const InputFrame& f : recording.frames) encodeFrame(e, f);
@@ -142,14 +158,16 @@ RecordingStatus decodeRecording(std::span<const std::uint8_t> bytes, Recording& 
   if (!d.has(kMagic.size()) || !std::equal(kMagic.begin(), kMagic.end(), bytes.begin()))
     return fail(RecordingError::NotARecording);
   for (std::size_t i = 0; i < kMagic.size(); ++i) d.get<std::uint8_t>();
-  if (!d.has(8)) return fail(RecordingError::Truncated);
+  if (!d.has(4)) return fail(RecordingError::Truncated);
   const auto version = d.get<std::uint16_t>();
   if (version > kRecordingVersion) return fail(RecordingError::UnsupportedVersion);
   if (version == 0 || d.get<std::uint16_t>() != kHandCount) return fail(RecordingError::Malformed);
-  const auto metaLength = d.get<std::uint32_t>();
-  if (!d.has(metaLength)) return fail(RecordingError::Truncated);
-  out.metadata.assign(reinterpret_cast<const char*>(bytes.data() + d.pos()), metaLength);
-  for (std::uint32_t i = 0; i < metaLength; ++i) d.get<std::uint8_t>();
+  // version 1 names no scene
+  if (version >= 2) {
+    if (!d.getText(out.scene.path) || !d.has(8)) return fail(RecordingError::Truncated);
+    out.scene.digest = d.get<std::uint64_t>();
+  }
+  if (!d.getText(out.metadata)) return fail(RecordingError::Truncated);
 
   // frames, then the end record
   while (d.has(1)) {
@@ -204,7 +222,7 @@ RecordingStatus RecordingWriter::write(std::span<const std::uint8_t> bytes) {
   return {};
 }
 
-RecordingStatus RecordingWriter::open(const std::string& path, const std::string& metadata) {
+RecordingStatus RecordingWriter::open(const std::string& path, const RecordedScene& scene, const std::string& metadata) {
   closeFile();
   crc_ = 0;
   frames_ = 0;
@@ -212,7 +230,7 @@ RecordingStatus RecordingWriter::open(const std::string& path, const std::string
   lastFlushTime_ = 0.0;
   file_ = std::fopen(path.c_str(), "wb");
   if (file_ == nullptr) return {RecordingError::CannotOpen, 0};
-  const std::vector<std::uint8_t> header = encodeHeader(metadata);
+  const std::vector<std::uint8_t> header = encodeHeader(scene, metadata);
   RecordingStatus s = write(header);
   if (s.ok() && std::fflush(file_) != 0) s = {RecordingError::CannotWrite, bytes_};
   return s;

@@ -38,6 +38,8 @@ class SceneCollision {
   virtual void maintain(const std::vector<int>& moved, const Points& x) = 0;
   virtual void crossings(const SpringModel& tissue, const Points& x, const Vec3& p, const Vec3& q,
                          std::vector<tools::FaceCrossing>& out) = 0;
+  virtual void passedOver(const SpringModel& tissue, const Points& before, const Points& x, const Vec3& tip,
+                          double reach, std::vector<tools::FaceCrossing>& out) = 0;
   virtual std::vector<int> cut(SpringModel& tissue, const Points& x, const ScalpelDef& def,
                                const Eigen::Isometry3d* from, const Eigen::Isometry3d& to) = 0;
 };
@@ -59,6 +61,11 @@ class TreeCollision final : public SceneCollision {
                  std::vector<tools::FaceCrossing>& out) override {
     out.clear();
     if (pierce_) pierce_->crossings(tissue, x, p, q, out);
+  }
+  void passedOver(const SpringModel& tissue, const Points& before, const Points& x, const Vec3& tip, double reach,
+                  std::vector<tools::FaceCrossing>& out) override {
+    out.clear();
+    if (pierce_) pierce_->passedOver(tissue, before, x, tip, reach, out);
   }
   std::vector<int> cut(SpringModel& tissue, const Points& x, const ScalpelDef& def,
                        const Eigen::Isometry3d* from, const Eigen::Isometry3d& to) override {
@@ -98,6 +105,11 @@ Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
   const ContactDef& contact = def_.contact;
   if (solver_->supportsPointSprings() && (contact.tissue || contact.tools) && !tissue.triangles().empty())
     contact_.emplace(tissue, contact.params);
+
+  // the tip dents a wall before it punctures it, where the solver takes soft terms: held to
+  // the face as stiffly as contact holds faces apart
+  if (def_.needle && def_.needle->punctureForce > 0.0 && solver_->supportsPointSprings())
+    indentStiffness_ = contact_ ? contact_->stiffness() : collide::defaultContactStiffness(tissue);
 
   // trees only for the tools that need them
   const bool faces = def_.needle.has_value();
@@ -238,7 +250,14 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
   e.barycentric = c.barycentric;
   e.tangent = tangent;
   e.normal = c.normal;
-  e.angleDeg = tools::pierceAngleDeg(tangent, c.normal);
+
+  // measured on the undeformed tissue: the wall the trainee aimed at, not the dent
+  const SpringModel& tissue = def_.tissue.model;
+  const Points rest = tissue.restPositions();
+  const auto& corners = tissue.triangles()[static_cast<std::size_t>(c.face)];
+  for (std::size_t k = 0; k < 3; ++k) e.restPoint += c.barycentric[static_cast<Eigen::Index>(k)] * rest.col(corners[k]);
+  const Vec3 restNormal = tools::faceNormal(tissue, rest, c.face);
+  e.angleDeg = tools::pierceAngleDeg(tangent, restNormal.isZero(0.0) ? c.normal : restNormal);
 
   // which vessel, which surface, which wall, how far from the cut
   const auto in = [&](const TriangleRange& r) { return c.face >= r.begin && c.face < r.end; };
@@ -258,10 +277,10 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
     e.end = vessel.end;
     e.surface = surface;
     const Vec3 axis = vessel.def.direction;
-    const Vec3 rel = c.point - vessel.def.origin;
+    const Vec3 rel = e.restPoint - vessel.def.origin;
     const double along = rel.dot(axis);
     const Vec3 radial = rel - along * axis;
-    e.wall = radial.dot(def_.camera.eye - c.point) >= 0.0 ? VesselWall::Front : VesselWall::Back;
+    e.wall = radial.dot(def_.camera.eye - e.restPoint) >= 0.0 ? VesselWall::Front : VesselWall::Back;
     e.biteMm = vessel.def.length - along;
     break;
   }
@@ -269,26 +288,66 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
 }
 
 void Scene::applyCrossings() {
-  // only a held needle is driven through tissue (a loose one has nothing to push it)
-  if (!needleHeld_) return;
+  // only a held needle is driven through tissue (a loose one has nothing to push it), and a
+  // tip let go or drawn back stops pressing
+  if (indent_ && (!needleHeld_ || tools::tipWithdrawn(def_.tissue.model, state_.x, *indent_, tipAfter_)))
+    indent_.reset();
+  if (!needleHeld_ || indent_) return;
   std::vector<tools::FaceCrossing> hits;
   collision_->crossings(def_.tissue.model, state_.x, tipBefore_, tipAfter_, hits);
-  for (const tools::FaceCrossing& c : hits) {
-    // the tangent where the tip crossed, between its directions before and after the step
-    const Vec3 tangent = ((1.0 - c.t) * tangentBefore_ + c.t * tangentAfter_).normalized();
-    pierces_.push_back(describePierce(c, tangent));
-    addEvent(c.entry ? SceneEventKind::PierceEntry : SceneEventKind::PierceExit, -1,
-             static_cast<int>(pierces_.size()) - 1, 1);
+  takeCrossings(hits, (tipAfter_ - tipBefore_).dot(tangentAfter_) > 0.0);
+}
 
-    // the suture runs through the wall here from now on
-    suture::Pierce p;
-    p.face = c.face;
-    p.barycentric = c.barycentric;
-    p.node = 0;
-    p.point = c.point;
-    sutureState_.pierces.push_back(p);
-    suturePierceEvents_.push_back(static_cast<int>(pierces_.size()) - 1);
+void Scene::takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting) {
+  for (const tools::FaceCrossing& c : hits) {
+    // the tip sat in a dent's apex when it punctured: going on, it may cross the dent's other
+    // faces either way as they spring back, and that is the same passage
+    if (std::find(punctured_.begin(), punctured_.end(), c.face) != punctured_.end()) continue;
+    // nor can it go into the material it is in, or out of what it is not in: a face that
+    // sprang back over a tip resting on it
+    if (c.entry == tipInWall_) continue;
+    punctured_.clear();
+
+    // an entry the tip cuts dents the wall first, and the crossings behind it wait for the
+    // puncture; a tip going back, tail first, follows the channel it cut
+    if (c.entry && cutting && indentStiffness_ > 0.0) {
+      indent_ = tools::beginIndentation(c);
+      return;
+    }
+    // the tangent where the tip crossed, between its directions before and after the step
+    pierceAt(c, ((1.0 - c.t) * tangentBefore_ + c.t * tangentAfter_).normalized());
   }
+}
+
+void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent) {
+  pierces_.push_back(describePierce(c, tangent));
+  addEvent(c.entry ? SceneEventKind::PierceEntry : SceneEventKind::PierceExit, -1,
+           static_cast<int>(pierces_.size()) - 1, 1);
+
+  // the suture runs through the wall here from now on
+  suture::Pierce p;
+  p.face = c.face;
+  p.barycentric = c.barycentric;
+  p.node = 0;
+  p.point = c.point;
+  sutureState_.pierces.push_back(p);
+  suturePierceEvents_.push_back(static_cast<int>(pierces_.size()) - 1);
+  tipInWall_ = c.entry;
+}
+
+void Scene::checkPuncture() {
+  const SpringModel& tissue = def_.tissue.model;
+  if (!indent_ || tools::indentationForce(tissue, state_.x, *indent_, tipAfter_, tangentAfter_, indentStiffness_) <
+                      def_.needle->punctureForce)
+    return;
+
+  // through: the pierce is where the face's point is now, under the tip
+  tools::FaceCrossing c = indent_->touch;
+  c.point = tools::indentedPoint(tissue, state_.x, *indent_);
+  c.normal = tools::faceNormal(tissue, state_.x, c.face);
+  indent_.reset();
+  pierceAt(c, tangentAfter_);
+  punctured_ = tools::facesAround(tissue, c.face);
 }
 
 void Scene::assembleControls() {
@@ -320,6 +379,7 @@ void Scene::assembleControls() {
   for (int c = 0; c < coupling_.size(); ++c)
     add(coupling_.nodes[static_cast<std::size_t>(c)], coupling_.targets.col(c));
   controls_.springs = couplingSprings_;
+  if (indent_) controls_.springs.push_back(tools::indentationSpring(tissue, *indent_, tipAfter_, indentStiffness_));
   controls_.springs.insert(controls_.springs.end(), holds.begin(), holds.end());
 }
 
@@ -510,6 +570,13 @@ StepReport Scene::step(const InputFrame& in) {
   report.tissue = solveTissue(budget, report);
   report.times.tissue = now() - t0;
 
+  // collision: a tip pressing on a wall punctures it once it presses hard enough
+  if (indent_) {
+    t0 = now();
+    checkPuncture();
+    report.times.collision += now() - t0;
+  }
+
   // the trees follow the nodes that moved (counted as collision time); their links are
   // checked against the stretch limits (interactions)
   if (collision_ || limited) {
@@ -518,6 +585,14 @@ StepReport Scene::step(const InputFrame& in) {
     for (int i = 0; i < static_cast<int>(state_.x.cols()); ++i)
       if (state_.x.col(i) != before.col(i)) moved.push_back(i);
     if (collision_) collision_->maintain(moved, state_.x);
+    if (suture_ && needleHeld_ && !indent_ && !moved.empty()) {
+      // faces the solve carried over the standing tip
+      double reach = 0.0;
+      for (int i : moved) reach = std::max(reach, (state_.x.col(i) - before.col(i)).norm());
+      std::vector<tools::FaceCrossing> hits;
+      collision_->passedOver(def_.tissue.model, before, state_.x, tipAfter_, reach, hits);
+      takeCrossings(hits, true);
+    }
     report.times.collision += now() - t0;
     if (limited) {
       t0 = now();
@@ -544,6 +619,12 @@ std::uint64_t Scene::hash() const {
       h = fnv1a64(&p.node, sizeof p.node, h);
       h = fnv1a64(p.barycentric.data(), sizeof(double) * 3, h);
     }
+  }
+  const std::uint8_t inWall = tipInWall_ ? 1 : 0;
+  h = fnv1a64(&inWall, sizeof inWall, h);
+  if (indent_) {
+    h = fnv1a64(&indent_->touch.face, sizeof indent_->touch.face, h);
+    h = fnv1a64(indent_->touch.barycentric.data(), sizeof(double) * 3, h);
   }
   for (const auto& f : forceps_) {
     if (!f) continue;

@@ -254,7 +254,7 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
   if (!object(v, path,
               {"shape", "radius", "length", "thread_length", "links", "needle_links",
                "break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
-               "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness"}))
+               "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness", "puncture_force"}))
     return false;
   suture::SutureDef& s = out.suture;
   s.links = 60;
@@ -281,7 +281,8 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
       !optInt(v, path, "substeps", 1, out.step.substeps) ||
       !optInt(v, path, "iterations", 1, out.step.iterations) ||
       !optPositive(v, path, "coupling_gain", out.coupling.gain) ||
-      !optPositive(v, path, "coupling_stiffness", out.coupling.stiffness))
+      !optPositive(v, path, "coupling_stiffness", out.coupling.stiffness) ||
+      !optNonNegative(v, path, "puncture_force", out.punctureForce))
     return false;
   if (s.links < s.needleLinks + 1) return fail(SceneErrorKind::InvalidValue, key(path, "links"));
   if (out.coupling.gain > 1.0) return fail(SceneErrorKind::InvalidValue, key(path, "coupling_gain"));

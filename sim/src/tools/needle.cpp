@@ -86,6 +86,56 @@ void PierceDetector<Volume>::crossings(const SpringModel& tissue, const Points& 
   out.swap(unique);
 }
 
+template <class Volume>
+void PierceDetector<Volume>::passedOver(const SpringModel& tissue, const Points& before, const Points& x,
+                                        const Vec3& tip, double reach, std::vector<FaceCrossing>& out) {
+  out.clear();
+  if (tree_.empty() || !(reach > 0.0)) return;
+  Points at(3, 1);
+  at.col(0) = tip;
+  collide::pointsNear(tree_, x, at, reach, near_);
+  for (const collide::PointNearFeature& f : near_) {
+    const auto& t = tissue.triangles()[static_cast<std::size_t>(f.feature)];
+    const Vec3 n0 = faceNormal(tissue, before, f.feature);
+    const Vec3 n1 = faceNormal(tissue, x, f.feature);
+    const double s0 = (tip - before.col(t[0])).dot(n0);
+    const double s1 = (tip - x.col(t[0])).dot(n1);
+    if (!((s0 > 0.0 && s1 <= 0.0) || (s0 < 0.0 && s1 >= 0.0))) continue;
+
+    // the face where it met the tip, and the tip's place on it
+    const double lambda = s0 / (s0 - s1);
+    std::array<Vec3, 3> corner;
+    for (std::size_t c = 0; c < 3; ++c) corner[c] = before.col(t[c]) + lambda * (x.col(t[c]) - before.col(t[c]));
+    const Vec3 e1 = corner[1] - corner[0];
+    const Vec3 e2 = corner[2] - corner[0];
+    const Vec3 r = tip - corner[0];
+    const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+    const double det = d11 * d22 - d12 * d12;
+    if (!(det > 0.0)) continue;
+    const double v = (d22 * r.dot(e1) - d12 * r.dot(e2)) / det;
+    const double w = (d11 * r.dot(e2) - d12 * r.dot(e1)) / det;
+    if (v < 0.0 || w < 0.0 || v + w > 1.0) continue;
+    FaceCrossing c;
+    c.face = f.feature;
+    c.t = 1.0;
+    c.barycentric = Vec3(1.0 - v - w, v, w);
+    c.point = c.barycentric.x() * x.col(t[0]) + c.barycentric.y() * x.col(t[1]) + c.barycentric.z() * x.col(t[2]);
+    c.normal = n1;
+    c.entry = s0 > 0.0;
+    out.push_back(c);
+  }
+  std::sort(out.begin(), out.end(), [](const FaceCrossing& a, const FaceCrossing& b) { return a.face < b.face; });
+
+  // one crossing where the tip met an edge or corner shared by faces of one surface
+  std::vector<FaceCrossing> unique;
+  for (const FaceCrossing& c : out)
+    if (std::none_of(unique.begin(), unique.end(), [&](const FaceCrossing& u) {
+          return u.entry == c.entry && (u.point - c.point).norm() <= 1e-9 && u.normal.dot(c.normal) > 0.0;
+        }))
+      unique.push_back(c);
+  out.swap(unique);
+}
+
 template class PierceDetector<collide::Sphere>;
 template class PierceDetector<collide::Aabb>;
 

@@ -1,9 +1,14 @@
 // `microsim-cli run` as a user runs it: the shipped stitch replays to the golden hash with its
-// four pierces; a recording made with --record replays to the same hash; damaged recordings
-// and broken scenes fail with a message naming the file, and no crash.
+// four pierces; a recording made with --record replays to the same hash, on the scene it
+// names when --scene is not given; damaged recordings, missing and broken scenes fail with a
+// message naming the file, and no crash.
 #include "support/golden_stitch.h"
 #include "support/cli_runner.h"
+#include "support/scene_copy.h"
 #include "support/shipped_files.h"
+
+#include "microsim/sim/scene/recorded_scene.h"
+#include "microsim/sim/scene/recording.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -51,21 +56,54 @@ TEST(RunCommand, TheShippedStitchReplaysToTheGoldenHashWithFourPierces) {
     EXPECT_TRUE(doc.value(QStringLiteral("timings_ms")).toObject().contains(QLatin1String(stage))) << stage;
 }
 
-TEST(RunCommand, ARecordedRunReplaysToTheSameHash) {
+TEST(RunCommand, ARecordedRunReplaysToTheSameHashOnTheSceneItNamesUnlessToldOtherwise) {
   QTemporaryDir dir;
+  const QString scene = microsim::testing::copyShippedScene(dir.path(), QStringLiteral("mine.json"));
+  ASSERT_FALSE(scene.isEmpty());
   const QString rec = dir.filePath(QStringLiteral("a.msrec"));
   const QString first = dir.filePath(QStringLiteral("first.json"));
   const QString second = dir.filePath(QStringLiteral("second.json"));
-  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--script"),
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), scene, QStringLiteral("--script"),
                      QStringLiteral("stitch"), QStringLiteral("--frames"), QStringLiteral("120"),
                      QStringLiteral("--record"), rec, QStringLiteral("--json"), first});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene, QStringLiteral("--input"), rec,
-              QStringLiteral("--json"), second});
+
+  // the recording names the scene, absolute, with its digest
+  microsim::sim::Recording recorded;
+  ASSERT_TRUE(microsim::sim::readRecording(rec.toStdString(), recorded).ok());
+  EXPECT_EQ(recorded.scene, microsim::sim::recordScene(scene.toStdString()));
+  EXPECT_EQ(recorded.metadata, R"({"script":"stitch"})");
+
+  // no --scene: the same scene, the same hash
+  r = runCli({QStringLiteral("run"), QStringLiteral("--input"), rec, QStringLiteral("--json"), second});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_EQ(readRunJson(first).value(QStringLiteral("steps")).toInt(), 120);
+  EXPECT_EQ(readRunJson(second).value(QStringLiteral("steps")).toInt(), 120);
+  EXPECT_TRUE(r.out.startsWith(QStringLiteral("scene  ") + scene + QLatin1Char('\n'))) << r.out.toStdString();
+  EXPECT_EQ(readRunJson(second).value(QStringLiteral("scene")).toString(), scene);
   EXPECT_EQ(readRunJson(first).value(QStringLiteral("hash")).toString(),
             readRunJson(second).value(QStringLiteral("hash")).toString());
+
+  // the scene gone: named, with where it was looked for; --scene still runs it
+  ASSERT_TRUE(QFile::remove(scene));
+  r = runCli({QStringLiteral("run"), QStringLiteral("--input"), rec});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("microsim-cli run: the recording was made on the scene %1").arg(scene)))
+      << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("give --scene FILE"))) << r.err.toStdString();
+  const QString third = dir.filePath(QStringLiteral("third.json"));
+  r = runCli({QStringLiteral("run"), QStringLiteral("--input"), rec, QStringLiteral("--scene"), kShippedScene,
+              QStringLiteral("--json"), third});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_EQ(readRunJson(third).value(QStringLiteral("scene")).toString(), kShippedScene);
+  EXPECT_EQ(readRunJson(third).value(QStringLiteral("hash")).toString(),
+            readRunJson(first).value(QStringLiteral("hash")).toString());
+
+  // the shipped stitch (format version 1) names none: only --scene can
+  r = runCli({QStringLiteral("run"), QStringLiteral("--input"), kShippedStitch});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(r.err.contains(QStringLiteral("microsim-cli run: the recording names no scene: give --scene FILE")))
+      << r.err.toStdString();
 }
 
 TEST(RunCommand, ADamagedRecordingFailsWithAClearMessage) {

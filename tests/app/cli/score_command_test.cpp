@@ -1,14 +1,17 @@
 // `microsim-cli score` as a user runs it: the shipped stitch scores the pinned value with
-// the single-stitch rubric (table and JSON), the scene comes from the recording's metadata
-// when it names one, --db stores the attempt, and bad rubrics, recordings and arguments
-// fail with a message naming the problem.
+// the single-stitch rubric (table and JSON), the scene comes from the recording when it names
+// one (and is looked for when it moved), --db stores the attempt, and bad rubrics,
+// recordings and arguments fail with a message naming the problem.
 #include "support/cli_runner.h"
 #include "support/golden_stitch.h"
 
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/sim/scene/recorded_scene.h"
 #include "microsim/sim/scene/recording.h"
+#include "support/scene_copy.h"
 #include "support/shipped_files.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -84,27 +87,45 @@ TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
               microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }
 
-TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
-  // the shipped stitch names no scene
+// writes `rec` to `path`
+bool writeRecording(const QString& path, const microsim::sim::Recording& rec) {
+  const std::vector<std::uint8_t> bytes = microsim::sim::encodeRecording(rec);
+  QFile f(path);
+  return f.open(QIODevice::WriteOnly) &&
+         f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size())) ==
+             static_cast<qint64>(bytes.size());
+}
+
+TEST(ScoreCommand, TheSceneComesFromTheRecordingOrMustBeGiven) {
+  // the shipped stitch (format version 1) names no scene
   CliRun r = score({QStringLiteral("--recording"), kShippedStitch});
   EXPECT_EQ(r.exitCode, 2);
-  EXPECT_TRUE(r.err.contains(QStringLiteral("--scene"))) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("names no scene: give --scene FILE"))) << r.err.toStdString();
 
-  // a copy whose metadata names it scores the same
+  // a copy whose header names it scores the same
   QTemporaryDir dir;
   microsim::sim::Recording rec;
   ASSERT_TRUE(microsim::sim::readRecording(kShippedStitch.toStdString(), rec).ok());
-  rec.metadata = "{\"scene\": \"" + kShippedScene.toStdString() + "\"}";
-  const auto bytes = microsim::sim::encodeRecording(rec);
+  rec.scene = microsim::sim::recordScene(kShippedScene.toStdString());
   const QString named = dir.filePath(QStringLiteral("named.msrec"));
-  QFile f(named);
-  ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-  f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size()));
-  f.close();
+  ASSERT_TRUE(writeRecording(named, rec));
   const QString out = dir.filePath(QStringLiteral("named.json"));
   r = score({QStringLiteral("--recording"), named, QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_NEAR(readScoreJson(out).value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
+  EXPECT_EQ(readScoreJson(out).value(QStringLiteral("scene")).toString(), kShippedScene);
+
+  // the app's recordings before version 2 named it in their metadata, and still score
+  microsim::sim::Recording version1Style = rec;
+  version1Style.scene = {};
+  version1Style.metadata = "{\"scene\": \"" + kShippedScene.toStdString() + "\"}";
+  const QString fromMetadata = dir.filePath(QStringLiteral("metadata.msrec"));
+  ASSERT_TRUE(writeRecording(fromMetadata, version1Style));
+  const QString metadataOut = dir.filePath(QStringLiteral("metadata.json"));
+  r = score({QStringLiteral("--recording"), fromMetadata, QStringLiteral("--json"), metadataOut});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_NEAR(readScoreJson(metadataOut).value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
+  const std::vector<std::uint8_t> bytes = microsim::sim::encodeRecording(rec);
 
   // a truncated copy scores what it holds and says so
   const QString cut = dir.filePath(QStringLiteral("cut.msrec"));
@@ -117,6 +138,73 @@ TEST(ScoreCommand, TheSceneComesFromTheRecordingsMetadataOrMustBeGiven) {
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   EXPECT_TRUE(r.err.contains(QStringLiteral("unfinished"))) << r.err.toStdString();
   EXPECT_TRUE(readScoreJson(cutOut).value(QStringLiteral("truncated")).toBool());
+}
+
+// `run --record` names the scene in the recording; `score` finds it where it was, beside the
+// recording when it moved there, and says which scene it looked for, and where, when it is gone
+TEST(ScoreCommand, AFreshRecordingIsScoredOnItsOwnSceneOrNamesTheSceneItLacks) {
+  QTemporaryDir dir;
+  const QString scene = microsim::testing::copyShippedScene(dir.path(), QStringLiteral("moving.json"));
+  ASSERT_FALSE(scene.isEmpty());
+  const QString recording = dir.filePath(QStringLiteral("attempts/fresh.msrec"));
+  ASSERT_TRUE(QDir(dir.path()).mkpath(QStringLiteral("attempts")));
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), scene, QStringLiteral("--script"),
+                     QStringLiteral("stitch"), QStringLiteral("--frames"), QStringLiteral("300"),
+                     QStringLiteral("--record"), recording});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+
+  // on the scene it names, as with --scene
+  const QString named = dir.filePath(QStringLiteral("named.json"));
+  const QString given = dir.filePath(QStringLiteral("given.json"));
+  r = score({QStringLiteral("--recording"), recording, QStringLiteral("--json"), named});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  ASSERT_EQ(score({QStringLiteral("--recording"), recording, QStringLiteral("--scene"), scene, QStringLiteral("--json"),
+                   given})
+                .exitCode,
+            0);
+  EXPECT_EQ(readScoreJson(named).value(QStringLiteral("scene")).toString(), scene);
+  EXPECT_EQ(readScoreJson(named).value(QStringLiteral("score")).toDouble(),
+            readScoreJson(given).value(QStringLiteral("score")).toDouble());
+  EXPECT_EQ(readScoreJson(named).value(QStringLiteral("frames")).toInt(), 300);
+
+  // moved beside the recording (its mesh still at ../meshes): found there
+  const QString beside = dir.filePath(QStringLiteral("attempts/moving.json"));
+  ASSERT_TRUE(QFile::rename(scene, beside));
+  const QString moved = dir.filePath(QStringLiteral("moved.json"));
+  r = score({QStringLiteral("--recording"), recording, QStringLiteral("--json"), moved});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_EQ(readScoreJson(moved).value(QStringLiteral("scene")).toString(), beside);
+  EXPECT_EQ(readScoreJson(moved).value(QStringLiteral("score")).toDouble(),
+            readScoreJson(given).value(QStringLiteral("score")).toDouble());
+  EXPECT_FALSE(r.err.contains(QStringLiteral("warning"))) << r.err.toStdString();
+
+  // edited since: scored, with a warning
+  QFile edit(beside);
+  ASSERT_TRUE(edit.open(QIODevice::Append));
+  edit.write("\n");
+  edit.close();
+  r = score({QStringLiteral("--recording"), recording});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("microsim-cli score: warning: %1 has changed since the recording was made "
+                                            "on it (%2)")
+                                 .arg(beside, scene)))
+      << r.err.toStdString();
+
+  // gone: the scene it was made on, where it was looked for, and what to do
+  ASSERT_TRUE(QFile::remove(beside));
+  r = score({QStringLiteral("--recording"), recording});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.out.isEmpty()) << r.out.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("microsim-cli score: the recording was made on the scene %1, which is "
+                                            "not there")
+                                 .arg(scene)))
+      << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(beside)) << r.err.toStdString();
+  EXPECT_TRUE(r.err.contains(QStringLiteral("give --scene FILE"))) << r.err.toStdString();
+
+  // --scene still says which
+  r = score({QStringLiteral("--recording"), recording, QStringLiteral("--scene"), kShippedScene});
+  EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
 }
 
 TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {

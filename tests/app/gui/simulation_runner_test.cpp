@@ -2,6 +2,7 @@
 #include "support/queued_signal_spy.h"
 #include "gui/simulation_runner.h"
 
+#include "microsim/sim/scene/recorded_scene.h"
 #include "microsim/sim/scene/recording.h"
 #include "support/shipped_files.h"
 
@@ -57,12 +58,15 @@ TEST(SimulationRunner, ReplayOfTheStitchGivesTheGoldenHashAndFourPierces) {
   QTRY_COMPARE(events.count(), static_cast<int>(runner.events().size()));
   EXPECT_GE(runner.events().size(), 4u);
 
-  // the recording holds exactly the consumed frames, with its end record
+  // the recording holds exactly the consumed frames, with its end record, and names the
+  // scene they were stepped on (microsim-cli run and score then need no --scene)
   runner.stop();
   EXPECT_TRUE(runner.recordingStatus().ok());
   sim::Recording again;
   ASSERT_TRUE(sim::readRecording(recording.toStdString(), again).ok());
   EXPECT_EQ(again.frames, frames);
+  EXPECT_EQ(again.scene, sim::recordScene(kShippedScene.toStdString()));
+  EXPECT_EQ(again.scene.path, kShippedScene.toStdString());
 }
 
 TEST(SimulationRunner, LiveStepsWithTheLatestSubmittedFrame) {

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
+#include <span>
 
 namespace microsim::sim {
 namespace {
@@ -26,7 +29,8 @@ InputFrame frameAt(int i) {
 
 Recording sample(int frames) {
   Recording r;
-  r.metadata = R"({"scene":"two-ends","lesson":3})";
+  r.scene = {"/data/scenes/two-ends.json", 0x0123456789abcdefULL};
+  r.metadata = R"({"lesson":3})";
   for (int i = 0; i < frames; ++i) r.frames.push_back(frameAt(i));
   return r;
 }
@@ -42,6 +46,7 @@ TEST(Recording, RoundTripIsBitExact) {
   Recording back;
   const RecordingStatus s = decodeRecording(bytes, back);
   ASSERT_TRUE(s.ok()) << static_cast<int>(s.error);
+  EXPECT_EQ(back.scene, r.scene);
   EXPECT_EQ(back.metadata, r.metadata);
   ASSERT_EQ(back.frames.size(), r.frames.size());
   for (std::size_t i = 0; i < r.frames.size(); ++i) EXPECT_EQ(back.frames[i], r.frames[i]) << i;
@@ -52,15 +57,73 @@ TEST(Recording, WriterStreamsTheSameBytesAsTheEncoder) {
   const Recording r = sample(300);
   const std::string path = tempPath("writer");
   RecordingWriter w;
-  ASSERT_TRUE(w.open(path, r.metadata).ok());
+  ASSERT_TRUE(w.open(path, r.scene, r.metadata).ok());
   for (const InputFrame& f : r.frames) ASSERT_TRUE(w.append(f).ok());
   EXPECT_EQ(w.frameCount(), 300u);
   ASSERT_TRUE(w.finish().ok());
 
   Recording back;
   ASSERT_TRUE(readRecording(path, back).ok());
+  EXPECT_EQ(back.scene, r.scene);
   EXPECT_EQ(back.frames, r.frames);
   std::remove(path.c_str());
+}
+
+TEST(Recording, TheHeaderNamesTheSceneBeforeTheMetadata) {
+  Recording r = sample(3);
+  r.scene = {"/s/a.json", 0x1122334455667788ULL};
+  r.metadata = "m";
+  const std::vector<std::uint8_t> bytes = encodeRecording(r);
+  // magic, version 2, hands, the scene's length and path, its digest, the metadata's length and bytes
+  ASSERT_GT(bytes.size(), 40u);
+  EXPECT_EQ(bytes[8], 2);
+  EXPECT_EQ(bytes[9], 0);
+  EXPECT_EQ(bytes[12], 9);  // "/s/a.json"
+  EXPECT_EQ(std::string(bytes.begin() + 16, bytes.begin() + 25), "/s/a.json");
+  EXPECT_EQ(bytes[25], 0x88);
+  EXPECT_EQ(bytes[32], 0x11);
+  EXPECT_EQ(bytes[33], 1);  // "m"
+  EXPECT_EQ(bytes[37], 'm');
+  EXPECT_EQ(bytes[38], 'F');
+
+  // a header cut inside the scene's path or digest is an unfinished file, not a damaged one
+  Recording back;
+  for (std::size_t cut : {std::size_t{14}, std::size_t{20}, std::size_t{28}})
+    EXPECT_EQ(decodeRecording(std::span(bytes).first(cut), back).error, RecordingError::Truncated) << cut;
+
+  // no scene known: an empty path, digest 0
+  r.scene = {};
+  ASSERT_TRUE(decodeRecording(encodeRecording(r), back).ok());
+  EXPECT_FALSE(back.scene.known());
+  EXPECT_EQ(back.scene.digest, 0u);
+}
+
+// resources/recordings/stitch.msrec was written in version 1 (no scene in its header) and is
+// kept byte for byte: golden hashes replay it
+TEST(Recording, AVersion1RecordingIsStillReadAndNamesNoScene) {
+  const std::string path = std::string(MICROSIM_SOURCE_DIR) + "/resources/recordings/stitch.msrec";
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 1000u);
+  ASSERT_EQ(bytes[8], 1) << "the shipped stitch is the version-1 sample";
+
+  Recording old;
+  const RecordingStatus s = decodeRecording(bytes, old);
+  ASSERT_TRUE(s.ok()) << static_cast<int>(s.error);
+  EXPECT_FALSE(old.scene.known());
+  EXPECT_EQ(old.metadata, R"({"script":"stitch","version":1})");
+  EXPECT_GT(old.frames.size(), 400u);
+
+  // written again it becomes version 2 with the same frames and metadata
+  old.scene = {"/anywhere/anastomosis.json", 42};
+  const std::vector<std::uint8_t> again = encodeRecording(old);
+  EXPECT_EQ(again[8], kRecordingVersion);
+  Recording back;
+  ASSERT_TRUE(decodeRecording(again, back).ok());
+  EXPECT_EQ(back.scene, old.scene);
+  EXPECT_EQ(back.metadata, old.metadata);
+  EXPECT_EQ(back.frames, old.frames);
+  EXPECT_EQ(again.size(), bytes.size() + 4 + old.scene.path.size() + 8);
 }
 
 TEST(Recording, AnUnfinishedAttemptKeepsItsCompleteFrames) {
@@ -69,7 +132,7 @@ TEST(Recording, AnUnfinishedAttemptKeepsItsCompleteFrames) {
   Recording back;
   {
     RecordingWriter w;
-    ASSERT_TRUE(w.open(path, r.metadata).ok());
+    ASSERT_TRUE(w.open(path, r.scene, r.metadata).ok());
     for (std::size_t i = 0; i < r.frames.size(); ++i) {
       ASSERT_TRUE(w.append(r.frames[i]).ok());
       // what a process killed now would leave (its stdio buffer lost): every frame older
@@ -140,7 +203,7 @@ TEST(Recording, GarbageNeverCrashesAndIsAlwaysRejected) {
 TEST(Recording, WriterRefusesInvalidFramesAndReportsAFullDisk) {
   const std::string path = tempPath("invalid");
   RecordingWriter w;
-  ASSERT_TRUE(w.open(path, "").ok());
+  ASSERT_TRUE(w.open(path, {}, "").ok());
   InputFrame f = frameAt(1);
   f.hands[0].position.x() = std::nan("");
   EXPECT_EQ(w.append(f).error, RecordingError::Malformed);
@@ -150,7 +213,7 @@ TEST(Recording, WriterRefusesInvalidFramesAndReportsAFullDisk) {
 
   if (std::filesystem::exists("/dev/full")) {
     RecordingWriter full;
-    const RecordingStatus opened = full.open("/dev/full", "metadata");
+    const RecordingStatus opened = full.open("/dev/full", {"/s/a.json", 1}, "metadata");
     EXPECT_EQ(opened.error, RecordingError::CannotWrite);
   }
 }

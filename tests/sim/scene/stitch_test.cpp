@@ -37,7 +37,10 @@ std::uint64_t replay(Scene& scene, const Recording& rec) {
 }
 
 TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
-  const SceneDef def = anastomosis();
+  // the geometry of the pass, with the tip piercing where it meets a wall (the shipped
+  // scene's dent before the puncture is needle_puncture_test.cpp's)
+  SceneDef def = anastomosis();
+  def.needle->punctureForce = 0.0;
   const std::vector<ExpectedPierce> expected = stitchPierces(def);
   ASSERT_EQ(expected.size(), 4u);
   const Recording rec = scriptedStitch(def);
@@ -55,7 +58,7 @@ TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
     EXPECT_EQ(p[k].end, expected[k].end);
     EXPECT_EQ(p[k].surface, surfaces[k]);
     EXPECT_EQ(p[k].wall, VesselWall::Front);
-    EXPECT_LT((p[k].point - expected[k].point).norm(), 0.05);
+    EXPECT_LT((p[k].restPoint - expected[k].point).norm(), 0.05);
     // the holes already made hold the wall to the turning needle, which tilts the faces the
     // exits cross by under a degree from the undeformed geometry the expectation assumes
     EXPECT_NEAR(p[k].angleDeg, expected[k].angleDeg, 1.0);
@@ -116,7 +119,15 @@ TEST(Stitch, TheShippedRecordingIsTheScriptAndReplaysToTheGoldenHash) {
   std::ifstream in(path, std::ios::binary);
   ASSERT_TRUE(in) << path;
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(bytes, encodeRecording(scriptedStitch(def)));
+  // it was written before recordings named their scene (format version 1): the script's
+  // version-2 bytes without the scene's path length, (empty) path and digest, and their CRC
+  std::vector<std::uint8_t> version1 = encodeRecording(scriptedStitch(def));
+  version1[8] = 1;
+  version1.erase(version1.begin() + 12, version1.begin() + 12 + 4 + 8);
+  version1.resize(version1.size() - 4);
+  const std::uint32_t crc = crc32(version1);
+  for (int k = 0; k < 4; ++k) version1.push_back(static_cast<std::uint8_t>(crc >> (8 * k)));
+  EXPECT_EQ(bytes, version1);
   Recording rec;
   ASSERT_TRUE(readRecording(path, rec).ok());
   Scene scene(def);

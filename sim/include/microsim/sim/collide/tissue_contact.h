@@ -45,6 +45,10 @@ struct TissueContactParams {
   double selfDistance = 0.3;  ///< mm: node and face this near at rest never collide
 };
 
+/// The contact stiffness when none is given: 20 × the stiffest link (g/s²), stiff enough that
+/// a contact yields far less than a link stretches.
+double defaultContactStiffness(const SpringModel& tissue);
+
 /// One node against one face.
 struct TissueContactPair {
   int node = -1;

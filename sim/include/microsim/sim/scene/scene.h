@@ -15,8 +15,11 @@
 //                 (the needle moves with the hand holding it), the coupling pull is computed;
 //   collision     the needle tip's path this step is tested against the tissue faces
 //                 (pierce entry and exit; only while a forceps holds the needle: nothing
-//                 drives a loose needle through a wall), a scalpel's blade against the
-//                 links; after the tissue solve the trees are refit where nodes moved;
+//                 drives a loose needle through a wall; with a puncture force, an entry
+//                 first dents the wall under the tip and pierces only when the tip presses
+//                 hard enough, checked after the tissue solve: tools/needle_indent.h), a
+//                 scalpel's blade against the links; after the tissue solve the trees are
+//                 refit where nodes moved;
 //   tissue        the tissue solver runs with those controls and, where it takes soft
 //                 terms, with contact: tissue against tissue and the placed forceps' jaws
 //                 against tissue (one-sided springs detected before the solve; a node the
@@ -55,6 +58,7 @@
 #include "microsim/sim/suture/suture_solver.h"
 #include "microsim/sim/tools/forceps.h"
 #include "microsim/sim/tools/needle.h"
+#include "microsim/sim/tools/needle_indent.h"
 
 #include <array>
 #include <cstdint>
@@ -132,6 +136,10 @@ class Scene {
   void grab(int hand);
   void stepSuture();
   void applyCrossings();
+  /// `cutting`: the tip moves point first (a tip going back follows its channel: no dent)
+  void takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting);
+  void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent);
+  void checkPuncture();
   void assembleControls();
   void checkStretch(const std::vector<int>& moved);
   SolveReport solveTissue(const SolveBudget& budget, StepReport& report);
@@ -159,6 +167,10 @@ class Scene {
   bool needleHeld_ = false;
   SpringControls coupling_;                  ///< the suture's pull by position
   std::vector<PointSpring> couplingSprings_;  ///< or as springs (two-way)
+  std::optional<tools::Indentation> indent_;  ///< the tip pressing on a wall, not yet through
+  double indentStiffness_ = 0.0;              ///< g/s²; 0 = crossings pierce at once
+  std::vector<int> punctured_;                ///< the faces of the last dent, until the next crossing
+  bool tipInWall_ = false;                    ///< the tip's last pierce was an entry
 
   std::array<std::optional<tools::Forceps>, kHandCount> forceps_;
   std::array<bool, kHandCount> jawsPlaced_{};  ///< a tracked hand holds the forceps: its jaws touch

@@ -108,6 +108,10 @@ struct NeedleDef {
   std::string solver = "direct";
   suture::SutureStepParams step;    ///< dt is overwritten with the scene's step
   suture::CouplingParams coupling;
+  /// µN: the force at which the tip punctures a wall it presses on; until then the wall dents
+  /// (tools/needle_indent.h). 0 = a crossing pierces at once (also with solvers that take no
+  /// soft terms).
+  double punctureForce = 0.0;
 };
 
 /// A scalpel blade: the rectangle [0, length] × {0} × [0, height] of the tool frame; the

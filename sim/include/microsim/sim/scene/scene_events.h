@@ -52,17 +52,20 @@ enum class VesselWall : std::uint8_t { Front, Back };
 struct PierceEvent {
   double time = 0.0;                ///< s, end of the step in which the tip crossed
   bool entry = true;                ///< into the wall (true) or out of it
-  Vec3 point = Vec3::Zero();        ///< mm
+  Vec3 point = Vec3::Zero();        ///< mm, where the hole is now
+  Vec3 restPoint = Vec3::Zero();    ///< mm, where it is in the undeformed tissue: a dented or
+                                    ///< dragged wall is judged where the tissue has the hole
   int face = -1;                    ///< tissue triangle
   Vec3 barycentric = Vec3::Zero();  ///< on the face's corners
   Vec3 tangent = Vec3::Zero();      ///< the needle's forward tangent at the tip (unit)
-  Vec3 normal = Vec3::Zero();       ///< the face normal, out of the wall material (unit)
-  double angleDeg = 0.0;            ///< acos |tangent·normal|: 0 = perpendicular bite
+  Vec3 normal = Vec3::Zero();       ///< the face normal now, out of the wall material (unit)
+  double angleDeg = 0.0;            ///< acos |tangent·n₀|, n₀ the undeformed face's normal:
+                                    ///< 0 = perpendicular to the wall
   int vessel = -1;                  ///< index into SceneDef::vessels, -1 for other tissue
   int end = -1;                     ///< 0 or 1 for the ends of a severed vessel, else -1
   VesselSurface surface = VesselSurface::NotAVessel;
   VesselWall wall = VesselWall::Front;
-  double biteMm = 0.0;              ///< distance from the vessel's cut end along its axis (mm)
+  double biteMm = 0.0;              ///< restPoint's distance from the cut end along the axis (mm)
 };
 
 struct SceneEvent {

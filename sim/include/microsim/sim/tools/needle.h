@@ -13,6 +13,14 @@
 // lowest face index at the same t and side). The tissue tree is kept current by the caller
 // (maintainVertices with the nodes that moved).
 //
+// Faces that move over the tip. The tissue moves in its own solve, after the tip's path was
+// tested, and a face dragged along the needle (a wall the thread holds) can sweep over the
+// standing tip. passedOver finds those: for each face within reach of the tip, the tip's
+// signed distance to the face's plane before and after the solve, s₀ and s₁; where the sign
+// changes, the face is interpolated to where it met the tip (λ = s₀/(s₀ − s₁)), and the tip's
+// projection on it must lie in the triangle. Seen from the tissue the tip went in through the
+// face's front when s₀ > 0 ≥ s₁ (an entry) and out of it when s₀ < 0 ≤ s₁ (an exit).
+//
 // Angles. The needle's tangent at the tip, τ, is the direction the tip travels along the
 // needle's shape (for the curved needle, the rest-shape tangent at node 0 rotated by the
 // needle's current rotation; for a straight one the tip link). The pierce angle is the angle
@@ -63,6 +71,10 @@ class PierceDetector {
   /// The crossings of p→q; `out` is cleared first.
   void crossings(const SpringModel& tissue, const Points& x, const Vec3& p, const Vec3& q,
                  std::vector<FaceCrossing>& out);
+  /// The faces within `reach` of the standing tip that moved over it from `before` to `x`
+  /// (see the header essay; t is 1), in face order; `out` is cleared first.
+  void passedOver(const SpringModel& tissue, const Points& before, const Points& x, const Vec3& tip,
+                  double reach, std::vector<FaceCrossing>& out);
 
   const collide::BvhTree<Volume>& tree() const { return tree_; }
 
@@ -71,6 +83,7 @@ class PierceDetector {
   collide::BvhTree<Volume> path_;
   Points pathX_{3, 2};
   std::vector<collide::FeaturePair> pairs_;
+  std::vector<collide::PointNearFeature> near_;
 };
 
 extern template class PierceDetector<collide::Sphere>;

@@ -1,0 +1,29 @@
+#pragma once
+// What `microsim-cli score` reports: the score and pass, every metric with its value, target,
+// weight, points and feedback key, the pierces and the stitches, as a table for people and
+// as JSON for programs.
+#include "cli/cli.h"
+
+#include "microsim/assessment/scoring/rubric.h"
+#include "microsim/assessment/scoring/score.h"
+
+#include <nlohmann/json.hpp>
+
+namespace microsim::cli {
+
+/// What was scored: the scene replayed, the recording and how many frames it held.
+struct ScoredFiles {
+  QString scene;
+  QString recording;
+  int frames = 0;
+};
+
+void printScoreReport(QTextStream& out, const assessment::AttemptScore& score,
+                      const assessment::Rubric& rubric, const ScoredFiles& files);
+
+/// The same as JSON: score, passed, rubric, scene, recording, frames, truncated,
+/// never_events, metrics, pierces, stitches (a missing value is null).
+nlohmann::json scoreReportJson(const assessment::AttemptScore& score,
+                               const assessment::Rubric& rubric, const ScoredFiles& files);
+
+}  // namespace microsim::cli

@@ -1,0 +1,50 @@
+#include "microsim/sim/tools/needle_indent.h"
+
+namespace microsim::sim::tools {
+
+Indentation beginIndentation(const FaceCrossing& entry) {
+  Indentation in;
+  in.touch = entry;
+  // an entry comes from the face's front: the normal already points at the tip's side
+  in.side = entry.entry ? entry.normal : Vec3(-entry.normal);
+  return in;
+}
+
+Vec3 indentedPoint(const SpringModel& tissue, const Points& x, const Indentation& in) {
+  const auto& t = tissue.triangles()[static_cast<std::size_t>(in.touch.face)];
+  const Vec3& b = in.touch.barycentric;
+  return b.x() * x.col(t[0]) + b.y() * x.col(t[1]) + b.z() * x.col(t[2]);
+}
+
+PointSpring indentationSpring(const SpringModel& tissue, const Indentation& in, const Vec3& tip, double k) {
+  const auto& t = tissue.triangles()[static_cast<std::size_t>(in.touch.face)];
+  PointSpring s;
+  s.nodes = {t[0], t[1], t[2], -1};
+  s.weights = {in.touch.barycentric.x(), in.touch.barycentric.y(), in.touch.barycentric.z(), 0.0};
+  s.anchor = tip;
+  s.k = k;
+  return s;
+}
+
+double indentationForce(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
+                        const Vec3& travel, double k) {
+  return k * (tip - indentedPoint(tissue, x, in)).dot(travel);
+}
+
+bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip) {
+  return (tip - indentedPoint(tissue, x, in)).dot(in.side) > 0.0;
+}
+
+std::vector<int> facesAround(const SpringModel& tissue, int face) {
+  const auto& corners = tissue.triangles()[static_cast<std::size_t>(face)];
+  std::vector<int> out;
+  for (std::size_t f = 0; f < tissue.triangles().size(); ++f)
+    for (int c : tissue.triangles()[f])
+      if (c == corners[0] || c == corners[1] || c == corners[2]) {
+        out.push_back(static_cast<int>(f));
+        break;
+      }
+  return out;
+}
+
+}  // namespace microsim::sim::tools
