@@ -1199,15 +1199,11 @@
     </message>
     <message>
         <source>Abandon</source>
-        <translation>Abbrechen</translation>
+        <translation>Aufgeben</translation>
     </message>
     <message>
         <source>The rubric %1 cannot be read (field %2, line %3).</source>
         <translation>Das Bewertungsschema %1 ist nicht lesbar (Feld %2, Zeile %3).</translation>
-    </message>
-    <message>
-        <source>The scene %1 cannot be prepared: %2</source>
-        <translation>Die Szene %1 kann nicht vorbereitet werden: %2</translation>
     </message>
     <message>
         <source>The scene %1 cannot be loaded (field %2, line %3).</source>
@@ -1244,6 +1240,30 @@
     <message>
         <source>The score could not be stored (%1).</source>
         <translation>Die Bewertung konnte nicht gespeichert werden (%1).</translation>
+    </message>
+    <message>
+        <source>Abandon the attempt?</source>
+        <translation>Versuch aufgeben?</translation>
+    </message>
+    <message>
+        <source>The attempt ends here without a score. It stays in your history as abandoned.</source>
+        <translation>Der Versuch endet hier ohne Bewertung. Er bleibt als aufgegeben in Ihrem Verlauf.</translation>
+    </message>
+    <message>
+        <source>Keep practising</source>
+        <translation>Weiter üben</translation>
+    </message>
+    <message>
+        <source>The tissue solver %1 chosen in the settings is not known; choose another.</source>
+        <translation>Der in den Einstellungen gewählte Gewebelöser %1 ist unbekannt; wählen Sie einen anderen.</translation>
+    </message>
+    <message>
+        <source>This attempt is not stored: the history refused it (%1).</source>
+        <translation>Dieser Versuch wird nicht gespeichert: der Verlauf hat ihn abgelehnt (%1).</translation>
+    </message>
+    <message>
+        <source>The history could not mark the attempt abandoned (%1).</source>
+        <translation>Der Verlauf konnte den Versuch nicht als aufgegeben markieren (%1).</translation>
     </message>
     <message>
         <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
@@ -1605,6 +1625,26 @@
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Nadel außerhalb ihres Bogens</translation>
+    </message>
+    <message>
+        <source>Pass each wall once: every extra passage injures it.</source>
+        <translation>Jede Wand nur einmal durchstechen: jeder weitere Durchstich verletzt sie.</translation>
+    </message>
+    <message>
+        <source>Turn the needle along its curve instead of pushing it.</source>
+        <translation>Die Nadel entlang ihrer Krümmung drehen, statt sie zu schieben.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue, not turned along its curve.</source>
+        <translation>Die Nadel wurde seitlich durch das Gewebe gezogen statt entlang ihrer Krümmung gedreht.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
     </message>
 </context>
 <context>
@@ -2293,10 +2333,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <source>Group</source>
         <translation>Gruppe</translation>
     </message>
-    <message numerus="yes">
-        <source>%n attempt(s), %1 finished</source>
-        <translation><numerusform>%n Versuch, %1 beendet</numerusform><numerusform>%n Versuche, %1 beendet</numerusform></translation>
-    </message>
     <message>
         <source>That attempt could not be read.</source>
         <translation>Dieser Versuch konnte nicht gelesen werden.</translation>
@@ -2340,6 +2376,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Saved the report to %1.</source>
         <translation>Der Bericht wurde unter %1 gespeichert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n attempt(s): %1 finished, %2 abandoned</source>
+        <translation><numerusform>%n Versuch: %1 beendet, %2 aufgegeben</numerusform><numerusform>%n Versuche: %1 beendet, %2 aufgegeben</numerusform></translation>
     </message>
 </context>
 <context>
@@ -2617,7 +2657,7 @@ RMS-Fehler %7 mm, größter %8 mm
     </message>
     <message>
         <source>Interrupted</source>
-        <translation>Abgebrochen</translation>
+        <translation>Unterbrochen</translation>
     </message>
     <message>
         <source>Time (s)</source>
@@ -2650,6 +2690,30 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Back wall</source>
         <translation>Hinterwand</translation>
+    </message>
+    <message>
+        <source>Abandoned</source>
+        <translation>Aufgegeben</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Nadel außerhalb ihres Bogens</translation>
+    </message>
+    <message>
+        <source>The wall was passed more often than needed.</source>
+        <translation>Die Wand wurde öfter als nötig durchstochen.</translation>
+    </message>
+    <message>
+        <source>The needle was pushed rather than turned along its curve.</source>
+        <translation>Die Nadel wurde geschoben statt entlang ihrer Krümmung gedreht.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue.</source>
+        <translation>Die Nadel wurde seitlich durch das Gewebe gezogen.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
     </message>
 </context>
 <context>

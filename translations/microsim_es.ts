@@ -1206,10 +1206,6 @@
         <translation>No se puede leer la rúbrica %1 (campo %2, línea %3).</translation>
     </message>
     <message>
-        <source>The scene %1 cannot be prepared: %2</source>
-        <translation>No se puede preparar la escena %1: %2</translation>
-    </message>
-    <message>
         <source>The scene %1 cannot be loaded (field %2, line %3).</source>
         <translation>No se puede cargar la escena %1 (campo %2, línea %3).</translation>
     </message>
@@ -1244,6 +1240,30 @@
     <message>
         <source>The score could not be stored (%1).</source>
         <translation>No se pudo guardar la puntuación (%1).</translation>
+    </message>
+    <message>
+        <source>Abandon the attempt?</source>
+        <translation>¿Abandonar el intento?</translation>
+    </message>
+    <message>
+        <source>The attempt ends here without a score. It stays in your history as abandoned.</source>
+        <translation>El intento termina aquí sin calificación. Queda en su historial como abandonado.</translation>
+    </message>
+    <message>
+        <source>Keep practising</source>
+        <translation>Seguir practicando</translation>
+    </message>
+    <message>
+        <source>The tissue solver %1 chosen in the settings is not known; choose another.</source>
+        <translation>El solucionador de tejido %1 elegido en los ajustes no se conoce; elija otro.</translation>
+    </message>
+    <message>
+        <source>This attempt is not stored: the history refused it (%1).</source>
+        <translation>Este intento no se guarda: el historial lo rechazó (%1).</translation>
+    </message>
+    <message>
+        <source>The history could not mark the attempt abandoned (%1).</source>
+        <translation>El historial no pudo marcar el intento como abandonado (%1).</translation>
     </message>
     <message>
         <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
@@ -1605,6 +1625,26 @@
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Aguja fuera de su arco</translation>
+    </message>
+    <message>
+        <source>Pass each wall once: every extra passage injures it.</source>
+        <translation>Atraviese cada pared una sola vez: cada paso de más la lesiona.</translation>
+    </message>
+    <message>
+        <source>Turn the needle along its curve instead of pushing it.</source>
+        <translation>Gire la aguja siguiendo su curva en lugar de empujarla.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue, not turned along its curve.</source>
+        <translation>La aguja se arrastró de lado por el tejido en lugar de girarla siguiendo su curva.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
     </message>
 </context>
 <context>
@@ -2293,10 +2333,6 @@ Error RMS %7 mm, máximo %8 mm
         <source>Group</source>
         <translation>Grupo</translation>
     </message>
-    <message numerus="yes">
-        <source>%n attempt(s), %1 finished</source>
-        <translation><numerusform>%n intento, %1 terminados</numerusform><numerusform>%n intentos, %1 terminados</numerusform></translation>
-    </message>
     <message>
         <source>That attempt could not be read.</source>
         <translation>No se pudo leer ese intento.</translation>
@@ -2340,6 +2376,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Saved the report to %1.</source>
         <translation>Informe guardado en %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n attempt(s): %1 finished, %2 abandoned</source>
+        <translation><numerusform>%n intento: %1 terminados, %2 abandonados</numerusform><numerusform>%n intentos: %1 terminados, %2 abandonados</numerusform></translation>
     </message>
 </context>
 <context>
@@ -2650,6 +2690,30 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Back wall</source>
         <translation>Pared posterior</translation>
+    </message>
+    <message>
+        <source>Abandoned</source>
+        <translation>Abandonado</translation>
+    </message>
+    <message>
+        <source>Needle off its arc</source>
+        <translation>Aguja fuera de su arco</translation>
+    </message>
+    <message>
+        <source>The wall was passed more often than needed.</source>
+        <translation>La pared se atravesó más veces de las necesarias.</translation>
+    </message>
+    <message>
+        <source>The needle was pushed rather than turned along its curve.</source>
+        <translation>La aguja se empujó en lugar de girarla siguiendo su curva.</translation>
+    </message>
+    <message>
+        <source>The needle was dragged sideways through the tissue.</source>
+        <translation>La aguja se arrastró de lado por el tejido.</translation>
+    </message>
+    <message>
+        <source>%1: not applicable to this input; not counted.</source>
+        <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
     </message>
 </context>
 <context>

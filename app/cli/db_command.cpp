@@ -12,7 +12,9 @@
 #include "cli/commands.h"
 #include "cli/history_text.h"
 #include "cli/output_file.h"
+#include "microsim/assessment/storage/attempts_csv.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -121,8 +123,8 @@ int actionFailed(const CommandLine& line, const DbRequest& request, const QStrin
 }
 
 // what the history refused
-int refused(const CommandLine& line, const DbRequest& request, const HistoryDatabase& history) {
-  return actionFailed(line, request, historyErrorText(history.lastError()));
+int refused(const CommandLine& line, const DbRequest& request, const assessment::HistoryStatus& why) {
+  return actionFailed(line, request, historyErrorText(why));
 }
 
 int backUp(const CommandLine& line, const DbRequest& request, HistoryDatabase& history) {
@@ -132,13 +134,13 @@ int backUp(const CommandLine& line, const DbRequest& request, HistoryDatabase& h
                         Cli::tr("%1 exists already; it was left untouched. Choose another name for the "
                                 "backup, or move that file away first.")
                             .arg(request.argument));
-  if (!history.backup(request.argument)) return refused(line, request, history);
+  if (!history.backup(request.argument)) return refused(line, request, history.lastError());
   line.io().out << Cli::tr("backed up %1 to %2").arg(history.path(), request.argument) << '\n';
   return kExitOk;
 }
 
 int restoreFrom(const CommandLine& line, const DbRequest& request, HistoryDatabase& history) {
-  if (!history.restore(request.argument)) return refused(line, request, history);
+  if (!history.restore(request.argument)) return refused(line, request, history.lastError());
   line.io().out << Cli::tr("restored %1 from %2 (schema version %3)")
                        .arg(history.path(), request.argument)
                        .arg(history.schemaVersion())
@@ -147,12 +149,14 @@ int restoreFrom(const CommandLine& line, const DbRequest& request, HistoryDataba
 }
 
 int exportCsv(const CommandLine& line, const DbRequest& request, const QString& instructor, HistoryDatabase& history) {
-  const auto id = history.verifyInstructor(instructor, passwordFromStdin());
-  if (!id) return refused(line, request, history);
+  assessment::PeopleStore people(history);
+  const auto id = people.verifyInstructor(instructor, passwordFromStdin());
+  if (!id) return refused(line, request, people.lastError());
   QFile out(request.argument);
   if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate))
     return line.failure(Cli::tr("cannot write %1: %2").arg(request.argument, out.errorString()));
-  if (!history.exportCsv({*id, Role::Instructor}, out)) return refused(line, request, history);
+  const assessment::HistoryStatus exported = assessment::exportAttemptsCsv(history, {*id, Role::Instructor}, out);
+  if (!exported.ok()) return refused(line, request, exported);
   QString why;
   if (!closeOutputFile(out, why)) return line.failure(Cli::tr("cannot write %1: %2").arg(request.argument, why));
   line.io().out << Cli::tr("wrote %1").arg(request.argument) << '\n';
@@ -160,8 +164,9 @@ int exportCsv(const CommandLine& line, const DbRequest& request, const QString& 
 }
 
 int listTrainees(const CommandLine& line, const DbRequest& request, const QString& jsonPath, HistoryDatabase& history) {
-  const QList<assessment::Trainee> people = history.trainees();
-  if (!history.lastError().ok()) return refused(line, request, history);
+  assessment::PeopleStore store(history);
+  const QList<assessment::Trainee> people = store.trainees();
+  if (!store.lastError().ok()) return refused(line, request, store.lastError());
   QTextStream& out = line.io().out;
   out << Cli::tr("id").leftJustified(8) << Cli::tr("role").leftJustified(12) << Cli::tr("group").leftJustified(16)
       << Cli::tr("name") << '\n';
@@ -199,10 +204,11 @@ int manageHistory(const CommandLine& line, const DbOptions& options) {
   if (action == QLatin1String("restore")) return restoreFrom(line, *request, history);
   if (action == QLatin1String("export-csv")) return exportCsv(line, *request, line.value(options.instructor), history);
   if (action == QLatin1String("list-trainees")) return listTrainees(line, *request, line.value(options.json), history);
+  assessment::PeopleStore people(history);
   const std::optional<qint64> id = action == QLatin1String("add-trainee")
-                                       ? history.addTrainee(request->argument, line.value(options.group))
-                                       : history.addInstructor(request->argument, passwordFromStdin());
-  if (!id) return refused(line, *request, history);
+                                       ? people.addTrainee(request->argument, line.value(options.group))
+                                       : people.addInstructor(request->argument, passwordFromStdin());
+  if (!id) return refused(line, *request, people.lastError());
   line.io().out << (action == QLatin1String("add-trainee") ? Cli::tr("added trainee %1 (id %2)")
                                                     : Cli::tr("added instructor %1 (id %2)"))
                 .arg(request->argument)

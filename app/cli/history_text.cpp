@@ -1,11 +1,12 @@
 #include "cli/history_text.h"
 
+#include "microsim/assessment/storage/people_store.h"
+
 namespace microsim::cli {
 
 namespace {
 
 using assessment::DatabaseError;
-using assessment::HistoryDatabase;
 using assessment::HistoryError;
 
 QString withDriverMessage(const QString& text, const QString& driverMessage) {
@@ -52,7 +53,7 @@ QString historyErrorWords(HistoryError error) {
       return Cli::tr("that name is taken");
     case HistoryError::InvalidInput:
       return Cli::tr("empty name, or a password shorter than %1 characters")
-          .arg(HistoryDatabase::kMinPasswordLength);
+          .arg(assessment::PeopleStore::kMinPasswordLength);
     case HistoryError::WrongPassword:
       return Cli::tr("unknown instructor or wrong password");
     case HistoryError::Unsupported:

@@ -10,7 +10,10 @@
 #include "cli/score_report.h"
 #include "cli/spring_scene_input.h"
 #include "microsim/assessment/scoring/attempt.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include <QFile>
 
@@ -144,16 +147,24 @@ std::optional<qint64> storeAttempt(const CommandLine& line, const ScoreRequest& 
     line.failure(databaseErrorText(opened, request.db));
     return std::nullopt;
   }
+  as::PeopleStore people(db);
   std::optional<qint64> trainee;
-  for (const as::Trainee& t : db.trainees())
+  for (const as::Trainee& t : people.trainees())
     if (t.name == request.trainee && t.role == as::Role::Trainee) trainee = t.id;
-  if (!trainee) trainee = db.addTrainee(request.trainee);
+  if (!trainee) trainee = people.addTrainee(request.trainee);
+  if (!trainee) {
+    line.failure(Cli::tr("cannot store the attempt: %1").arg(historyErrorText(people.lastError())));
+    return std::nullopt;
+  }
   QFile file(request.recording);
   const QByteArray bytes = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
   const QString lesson = request.lesson.isEmpty() ? QString::fromStdString(rubric.id) : request.lesson;
-  const std::optional<qint64> attempt = trainee ? db.beginAttempt(*trainee, lesson, request.mode) : std::nullopt;
-  if (!attempt || !db.finishAttempt(*attempt, score, bytes)) {
-    line.failure(Cli::tr("cannot store the attempt: %1").arg(historyErrorText(db.lastError())));
+  as::AttemptStore attempts(db);
+  as::ScoreStore scores(db);
+  const std::optional<qint64> attempt = attempts.begin(*trainee, lesson, request.mode);
+  if (!attempt || !scores.finish(*attempt, score, bytes)) {
+    const as::HistoryStatus why = attempt ? scores.lastError() : attempts.lastError();
+    line.failure(Cli::tr("cannot store the attempt: %1").arg(historyErrorText(why)));
     return std::nullopt;
   }
   return attempt;

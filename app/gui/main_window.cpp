@@ -153,7 +153,7 @@ void MainWindow::buildMenus() {
 }
 
 void MainWindow::showLessons() {
-  attempt_->abandon();
+  attempt_->stop();
   lessonList_->show(lessons_, viewer_, userName_, language());
   pages_->setCurrentWidget(lessonList_);
 }
@@ -215,7 +215,7 @@ void MainWindow::showAbout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  attempt_->abandon();
+  attempt_->stop();
   QSettings settings;
   settings.setValue(settings::windowGeometry(), saveGeometry());
   settings.setValue(settings::windowState(), saveState());

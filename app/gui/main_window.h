@@ -6,7 +6,8 @@
 //
 // Closing the window during an attempt stops the simulation and leaves the attempt unfinished
 // in the history (in progress, marked interrupted when the history is next opened); its
-// recording file keeps every frame up to the close.
+// recording file keeps every frame up to the close. Abandoning one (confirmed) stores it as
+// abandoned.
 
 #include "gui/pages/attempt_page.h"
 #include "lesson/lesson.h"

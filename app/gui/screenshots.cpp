@@ -9,6 +9,7 @@
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
 
+#include "microsim/assessment/storage/people_store.h"
 #include "microsim/sim/scene/recording.h"
 
 #include <QApplication>
@@ -65,7 +66,7 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   const assessment::DatabaseStatus status = history.open(path);
   if (!status.ok()) return fail(status.driverMessage);
   for (const QString& name : {QStringLiteral("Alex Demo"), QStringLiteral("Maria Beispiel"), QStringLiteral("Sam Ejemplo")})
-    history.addTrainee(name, QStringLiteral("Residents 2026"));
+    assessment::PeopleStore(history).addTrainee(name, QStringLiteral("Residents 2026"));
 
   MainWindow window(&history, status, path);
   window.resize(width, height);

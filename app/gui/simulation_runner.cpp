@@ -2,6 +2,8 @@
 
 #include "microsim/sim/scene/recorded_scene.h"
 
+#include <QJsonDocument>
+
 #include <pthread.h>
 
 #include <algorithm>
@@ -38,6 +40,23 @@ SimulationRunner::SimulationRunner(QObject* parent) : QObject(parent) {
 SimulationRunner::~SimulationRunner() { stop(); }
 
 bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::SceneError* error) {
+  reset();
+  auto opened = sim::openScene(scenePath.toStdString(), mode);
+  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
+    if (error) *error = *e;
+    return false;
+  }
+  adopt(std::move(std::get<std::unique_ptr<sim::Scene>>(opened)), scenePath);
+  return true;
+}
+
+void SimulationRunner::load(const sim::SceneDef& def, sim::StepMode mode) {
+  reset();
+  adopt(std::make_unique<sim::Scene>(def, mode), QString::fromStdString(def.file));
+}
+
+// stops any run and forgets the scene and everything it produced
+void SimulationRunner::reset() {
   stop();
   scene_.reset();
   {
@@ -57,17 +76,13 @@ bool SimulationRunner::load(const QString& scenePath, sim::StepMode mode, sim::S
   }
   steps_ = 0;
   hash_ = 0;
+}
 
-  auto opened = sim::openScene(scenePath.toStdString(), mode);
-  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
-    if (error) *error = *e;
-    return false;
-  }
-  scene_ = std::move(std::get<std::unique_ptr<sim::Scene>>(opened));
+void SimulationRunner::adopt(std::unique_ptr<sim::Scene> scene, const QString& scenePath) {
+  scene_ = std::move(scene);
   scenePath_ = scenePath;
   hash_ = scene_->hash();
   publish();
-  return true;
 }
 
 void SimulationRunner::start() {
@@ -109,7 +124,10 @@ void SimulationRunner::stop() {
   finishRecording();
 }
 
-void SimulationRunner::setRecordingFile(const QString& path) { recordingPath_ = path; }
+void SimulationRunner::setRecordingFile(const QString& path, const QJsonObject& metadata) {
+  recordingPath_ = path;
+  recordingMetadata_ = metadata;
+}
 
 sim::RecordingStatus SimulationRunner::recordingStatus() const {
   const std::lock_guard lock(resultsMutex_);
@@ -121,8 +139,12 @@ void SimulationRunner::openRecording() {
   recordingStatus_ = {};
   if (recordingPath_.isEmpty() || writer_.isOpen()) return;
   // the header names the scene (absolute, with its digest), so that `microsim-cli run` and
-  // `score` replay the file on the scene it was made on without being told
-  recordingStatus_ = writer_.open(recordingPath_.toStdString(), sim::recordScene(scenePath_.toStdString()), {});
+  // `score` replay the file on the scene it was made on without being told; the metadata is
+  // what the caller adds (the app: the lesson, and the solver when the settings changed it)
+  const std::string metadata =
+      recordingMetadata_.isEmpty() ? std::string()
+                                   : QJsonDocument(recordingMetadata_).toJson(QJsonDocument::Compact).toStdString();
+  recordingStatus_ = writer_.open(recordingPath_.toStdString(), sim::recordScene(scenePath_.toStdString()), metadata);
 }
 
 void SimulationRunner::finishRecording() {

@@ -24,6 +24,7 @@
 #include "microsim/sim/scene/render_snapshot.h"
 #include "microsim/sim/scene/scene.h"
 
+#include <QJsonObject>
 #include <QMetaType>
 #include <QObject>
 #include <QString>
@@ -52,6 +53,9 @@ class SimulationRunner : public QObject {
   /// first. Returns false and fills `error` when the file does not load; the previous scene
   /// is then gone too.
   bool load(const QString& scenePath, sim::StepMode mode, sim::SceneError* error = nullptr);
+  /// The same from a scene definition already loaded (and perhaps changed in memory); its
+  /// `file` names the scene in recordings.
+  void load(const sim::SceneDef& def, sim::StepMode mode);
   /// Live: steps at the scene's rate from the latest submitted frame. No-op without a scene or
   /// while running.
   void start();
@@ -63,7 +67,8 @@ class SimulationRunner : public QObject {
   void replay(std::vector<sim::InputFrame> frames);
   /// Records every consumed InputFrame to this file from the next start()/replay() on (empty:
   /// no recording); the file is finished on stop(), at the end of a replay, or on destruction.
-  void setRecordingFile(const QString& path);
+  /// Its header names the loaded scene; `metadata` (empty: none) goes in as compact JSON.
+  void setRecordingFile(const QString& path, const QJsonObject& metadata = {});
   /// The recording's state (CannotOpen / CannotWrite when writing failed).
   sim::RecordingStatus recordingStatus() const;
 
@@ -105,6 +110,8 @@ class SimulationRunner : public QObject {
   void openRecording();
   void finishRecording();
   void launch(std::function<void()> body);
+  void reset();
+  void adopt(std::unique_ptr<sim::Scene> scene, const QString& scenePath);
 
   std::unique_ptr<sim::Scene> scene_;  // touched only by the simulation thread while running
   QString scenePath_;
@@ -129,6 +136,7 @@ class SimulationRunner : public QObject {
   std::vector<sim::InputFrame> consumed_;
 
   QString recordingPath_;
+  QJsonObject recordingMetadata_;
   sim::RecordingWriter writer_;
   sim::RecordingStatus recordingStatus_;
 };

@@ -1,37 +1,28 @@
 #include "gui/pages/attempt_page.h"
 
+#include "gui/session/attempt_session.h"
 #include "gui/settings/scene_overrides.h"
 #include "gui/settings/tunables.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
-#include "lesson/progress.h"
 #include "tracking/manual_source.h"
 
-#include "microsim/assessment/scoring/attempt.h"
-
 #include <QCoreApplication>
-#include <QDateTime>
 #include <QDir>
-#include <QFile>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QStandardPaths>
-#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cmath>
 
 namespace microsim::gui {
 
 namespace {
-
-QString dataFolder(const QString& name) {
-  return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(name);
-}
 
 std::vector<Guide> viewportGuides(const lesson::Lesson& lesson, const std::vector<bool>& hit) {
   std::vector<Guide> guides;
@@ -48,14 +39,12 @@ std::vector<Guide> viewportGuides(const lesson::Lesson& lesson, const std::vecto
 }  // namespace
 
 AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
-    : QWidget(parent), history_(history), runner_(std::make_unique<SimulationRunner>()) {
-  qRegisterMetaType<microsim::gui::AttemptResult>();
+    : QWidget(parent), history_(history) {
   setObjectName(QStringLiteral("attemptPage"));
   viewport_ = new Viewport(this);
   viewport_->setObjectName(QStringLiteral("attemptViewport"));
   viewport_->installEventFilter(this);
   manual_ = new tracking::ManualSource(this);
-  connect(manual_, &tracking::TrackerSource::frameReady, runner_.get(), &SimulationRunner::submitFrame);
 
   title_ = new QLabel(this);
   title_->setWordWrap(true);
@@ -89,98 +78,73 @@ AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
   layout->addWidget(viewport_, 1);
   layout->addWidget(panel);
 
-  progressTimer_ = new QTimer(this);
-  progressTimer_->setInterval(100);
-  connect(progressTimer_, &QTimer::timeout, this, &AttemptPage::updateProgress);
-  connect(runner_.get(), &SimulationRunner::replayFinished, this, [this] {
-    if (!replaying_) return;
-    if (finishAtEnd_) {
-      finish();
-      return;
-    }
-    progressTimer_->stop();
-    updateProgress();
-  });
   connect(finish_, &QPushButton::clicked, this, &AttemptPage::finish);
-  connect(abandon_, &QPushButton::clicked, this, [this] {
-    abandon();
-    Q_EMIT abandoned();
-  });
+  connect(abandon_, &QPushButton::clicked, this, &AttemptPage::confirmAbandon);
 }
 
-AttemptPage::~AttemptPage() {
-  stopRunning();
-  if (scoring_.joinable()) scoring_.join();
+AttemptPage::~AttemptPage() { closeSession(); }
+
+void AttemptPage::closeSession() {
+  if (!session_) return;
+  manual_->stop();
+  viewport_->setManualSource(nullptr);
   viewport_->setRunner(nullptr);
+  session_.reset();  // an attempt left in progress becomes interrupted at the next open
 }
 
 bool AttemptPage::begin(const lesson::Lesson& lesson, int lessonIndex, assessment::AttemptMode mode,
                         const assessment::Viewer& viewer, const QString& language, QString* error) {
-  abandon();
+  closeSession();
   lesson_ = lesson;
-  lessonIndex_ = lessonIndex;
-  attemptMode_ = mode;
   language_ = language;
+  replaying_ = false;
 
-  // rubric and scene (with the solver settings)
-  const auto rubric = assessment::loadRubric(lesson.rubricPath.toStdString());
-  if (const auto* e = std::get_if<assessment::RubricError>(&rubric)) {
-    *error = tr("The rubric %1 cannot be read (field %2, line %3).")
-                 .arg(QString::fromStdString(e->file), QString::fromStdString(e->field))
-                 .arg(e->line);
+  AttemptSetup setup;
+  setup.lesson = lesson;
+  setup.lessonIndex = lessonIndex;
+  setup.mode = mode;
+  setup.viewer = viewer;
+  setup.historyLocation = history_ && history_->isOpen() ? history_->location() : QString();
+  setup.solver = settings::solverOverrideFromSettings();
+  setup.recordingFolder =
+      QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("recordings"));
+  auto session = std::make_unique<AttemptSession>();
+  AttemptProblem problem;
+  if (!session->prepare(setup, &problem)) {
+    *error = describe(problem);
     return false;
   }
-  rubric_ = std::get<assessment::Rubric>(rubric);
-  QString overrideError;
-  scenePath_ = settings::applySolverOverride(lesson.scenePath, settings::solverOverrideFromSettings(),
-                                             dataFolder(QStringLiteral("scenes")), &overrideError);
-  if (scenePath_.isEmpty()) {
-    *error = tr("The scene %1 cannot be prepared: %2").arg(lesson.scenePath, overrideError);
-    return false;
-  }
-  // stepped deterministically, live too: the frames the attempt consumed replay to the very
-  // states the trainee saw, and the score is computed on those (a slow step makes the scene
-  // lag the hand rather than show a tissue the score will not see)
-  sim::SceneError sceneError;
-  if (!runner_->load(scenePath_, sim::StepMode::Deterministic, &sceneError)) {
-    *error = tr("The scene %1 cannot be loaded (field %2, line %3).")
-                 .arg(scenePath_, QString::fromStdString(sceneError.field))
-                 .arg(sceneError.line);
-    return false;
-  }
+  session_ = std::move(session);
+  connect(session_.get(), &AttemptSession::progressed, this, &AttemptPage::showProgress);
+  connect(session_.get(), &AttemptSession::begun, this, [this](qint64 id) {
+    // a refusal the history gave (failed, just before) says more than this
+    if (id == 0 && status_->text().isEmpty()) status_->setText(tr("This attempt is not stored (no history)."));
+  });
+  connect(session_.get(), &AttemptSession::failed, this,
+          [this](const AttemptProblem& p) { status_->setText(describe(p)); });
+  connect(session_.get(), &AttemptSession::replayEnded, this, [this] { replaying_ = false; });
+  connect(session_.get(), &AttemptSession::finished, this, [this](const AttemptResult& result) {
+    status_->clear();
+    Q_EMIT finished(result);
+  });
+  connect(session_.get(), &AttemptSession::abandoned, this, [this] { Q_EMIT abandoned(); });
+  connect(manual_, &tracking::TrackerSource::frameReady, session_->runner(), &SimulationRunner::submitFrame);
 
-  // the attempt in the history, and its recording file
-  attemptId_ = 0;
-  if (history_ && history_->isOpen() && viewer.userId != 0) {
-    const std::optional<qint64> id = history_->beginAttempt(viewer.userId, lesson.id, mode);
-    if (id) attemptId_ = *id;
-  }
-  const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"));
-  QDir().mkpath(dataFolder(QStringLiteral("recordings")));
-  recordingPath_ = dataFolder(QStringLiteral("recordings")) +
-                   QStringLiteral("/%1-%2-%3.msrec").arg(lesson.id, stamp).arg(attemptId_);
-  runner_->setRecordingFile(recordingPath_);
-
-  // the page
   title_->setText(QStringLiteral("<h3>%1</h3>").arg(lesson.title.in(language).toHtmlEscaped()));
   mode_->setText(mode == assessment::AttemptMode::Learn ? tr("Learn mode: follow the marks.")
                                                         : tr("Test mode: graded, no hints."));
   steps_->clear();
   for (const lesson::Step& s : lesson.steps) steps_->addItem(s.instruction.in(language));
-  status_->setText(attemptId_ == 0 ? tr("This attempt is not stored (no history).") : QString());
-  stepsDone_ = 0;
-  eventsSeen_ = 0;
-  graspNoted_ = false;
-  restPositions_.clear();
-  maxDisplacementMm_ = 0.0;
+  status_->setText(setup.historyLocation.isEmpty() || viewer.userId == 0
+                       ? tr("This attempt is not stored (no history).")
+                       : QString());
   finish_->setEnabled(true);
   abandon_->setEnabled(true);
-  viewport_->setRunner(runner_.get());
+  viewport_->setRunner(session_->runner());
   viewport_->sceneChanged();
   viewport_->setGuides(mode == assessment::AttemptMode::Learn ? viewportGuides(lesson, {}) : std::vector<Guide>{});
   applyViewSettings();
-  active_ = true;
-  updateProgress();
+  showProgress(session_->progress());
   return true;
 }
 
@@ -192,137 +156,103 @@ void AttemptPage::applyViewSettings() {
 }
 
 void AttemptPage::startLive() {
-  if (!active_) return;
+  if (!isActive()) return;
   replaying_ = false;
-  if (const sim::SceneDef* def = runner_->sceneDef()) manual_->placeTools(*def);
+  manual_->placeTools(session_->sceneDef());
   viewport_->setManualSource(manual_);
   manual_->start();
-  runner_->start();
-  progressTimer_->start();
+  session_->startLive();
   viewport_->setFocus();
 }
 
 void AttemptPage::replay(std::vector<sim::InputFrame> frames, bool finishAtEnd) {
-  if (!active_) return;
+  if (!isActive()) return;
   manual_->stop();
   viewport_->setManualSource(nullptr);
-  // a fresh scene stepped deterministically, recorded from its first frame
-  sim::SceneError error;
-  if (!runner_->load(scenePath_, sim::StepMode::Deterministic, &error)) return;
-  runner_->setRecordingFile(recordingPath_);
-  viewport_->sceneChanged();
-  restPositions_.clear();
-  eventsSeen_ = 0;
-  graspNoted_ = false;
   replaying_ = true;
-  finishAtEnd_ = finishAtEnd;
   status_->setText(tr("Replaying a recording…"));
-  progressTimer_->start();
-  runner_->replay(std::move(frames));
+  session_->replay(std::move(frames), finishAtEnd);
+  viewport_->sceneChanged();
 }
 
-void AttemptPage::stopRunning() {
-  progressTimer_->stop();
+void AttemptPage::finish() {
+  if (!isActive()) return;
   manual_->stop();
-  runner_->stop();
-  replaying_ = false;
+  finish_->setEnabled(false);
+  abandon_->setEnabled(false);
+  status_->setText(tr("Scoring…"));
+  session_->finish();
 }
 
-void AttemptPage::abandon() {
-  if (!active_) return;
-  stopRunning();
-  active_ = false;
+void AttemptPage::confirmAbandon() {
+  if (!isActive()) return;
+  QMessageBox box(QMessageBox::Question, tr("Abandon the attempt?"),
+                  tr("The attempt ends here without a score. It stays in your history as abandoned."),
+                  QMessageBox::Yes | QMessageBox::No, this);
+  box.setObjectName(QStringLiteral("abandonConfirmation"));
+  box.button(QMessageBox::Yes)->setText(tr("Abandon"));
+  box.button(QMessageBox::No)->setText(tr("Keep practising"));
+  box.setDefaultButton(QMessageBox::No);
+  if (box.exec() != QMessageBox::Yes || !isActive()) return;
+  manual_->stop();
+  finish_->setEnabled(false);
+  abandon_->setEnabled(false);
+  session_->abandon();
 }
 
-void AttemptPage::updateProgress() {
-  if (const auto snapshot = runner_->latestSnapshot()) {
-    if (restPositions_.empty()) restPositions_ = snapshot->tissuePositions;
-    const std::vector<float>& p = snapshot->tissuePositions;
-    for (std::size_t i = 0; i + 2 < p.size() && i + 2 < restPositions_.size(); i += 3) {
-      const double dx = p[i] - restPositions_[i], dy = p[i + 1] - restPositions_[i + 1], dz = p[i + 2] - restPositions_[i + 2];
-      maxDisplacementMm_ = std::max(maxDisplacementMm_, std::sqrt(dx * dx + dy * dy + dz * dz));
-    }
-  }
-  const std::vector<sim::SceneEvent> events = runner_->events();
-  noteGrasps(events);
-  const lesson::AttemptFacts facts = lesson::collectFacts(events, runner_->pierces(), maxDisplacementMm_);
-  const int done = lesson::stepsDone(lesson_, facts);
+void AttemptPage::stop() {
+  if (!session_) return;
+  manual_->stop();
+  session_->stop();
+}
+
+bool AttemptPage::isActive() const { return session_ && session_->isActive(); }
+qint64 AttemptPage::attemptId() const { return session_ ? session_->attemptId() : 0; }
+int AttemptPage::stepsDone() const { return session_ ? session_->progress().stepsDone : 0; }
+SimulationRunner* AttemptPage::runner() const { return session_ ? session_->runner() : nullptr; }
+
+void AttemptPage::showProgress(const AttemptProgress& progress) {
+  const int done = progress.stepsDone;
   for (int i = 0; i < steps_->count(); ++i) {
     QListWidgetItem* item = steps_->item(i);
     const QString text = lesson_.steps[static_cast<std::size_t>(i)].instruction.in(language_);
     item->setText((i < done ? QStringLiteral("✔ ") : i == done ? QStringLiteral("➜ ") : QStringLiteral("   ")) + text);
     item->setForeground(i < done ? QColor(0x1b, 0x7f, 0x3a) : palette().color(QPalette::Text));
   }
-  if (done != stepsDone_ && attemptMode_ == assessment::AttemptMode::Learn)
-    viewport_->setGuides(viewportGuides(lesson_, lesson::guidesHit(lesson_, facts, 0.1)));
-  stepsDone_ = done;
-  if (done == static_cast<int>(lesson_.steps.size()) && !replaying_)
+  if (session_ && session_->setup().mode == assessment::AttemptMode::Learn)
+    viewport_->setGuides(viewportGuides(lesson_, progress.guidesHit));
+  // jaws that closed on nothing say so until a grasp holds something
+  if (progress.emptyGraspHand >= 0) {
+    status_->setText(progress.emptyGraspHand == static_cast<int>(sim::Hand::Left)
+                         ? tr("The left forceps closed on nothing: nothing lay between its jaws.")
+                         : tr("The right forceps closed on nothing: nothing lay between its jaws."));
+    graspNoted_ = true;
+  } else if (graspNoted_) {
+    status_->clear();
+    graspNoted_ = false;
+  }
+  if (done == static_cast<int>(lesson_.steps.size()) && !replaying_ && isActive())
     status_->setText(tr("Every step is done: finish the attempt when you are ready."));
 }
 
-void AttemptPage::noteGrasps(const std::vector<sim::SceneEvent>& events) {
-  if (events.size() < eventsSeen_) eventsSeen_ = 0;  // a new scene
-  for (std::size_t i = eventsSeen_; i < events.size(); ++i) {
-    const sim::SceneEvent& e = events[i];
-    if (e.kind == sim::SceneEventKind::GraspEmpty) {
-      status_->setText(e.hand == static_cast<int>(sim::Hand::Left)
-                           ? tr("The left forceps closed on nothing: nothing lay between its jaws.")
-                           : tr("The right forceps closed on nothing: nothing lay between its jaws."));
-      graspNoted_ = true;
-    } else if (graspNoted_ && (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)) {
-      status_->clear();
-      graspNoted_ = false;
-    }
+QString AttemptPage::describe(const AttemptProblem& problem) {
+  switch (problem.failure) {
+    case AttemptFailure::RubricUnreadable:
+      return tr("The rubric %1 cannot be read (field %2, line %3).").arg(problem.file, problem.field).arg(problem.line);
+    case AttemptFailure::SceneUnreadable:
+      return tr("The scene %1 cannot be loaded (field %2, line %3).").arg(problem.file, problem.field).arg(problem.line);
+    case AttemptFailure::UnknownSolver:
+      return tr("The tissue solver %1 chosen in the settings is not known; choose another.").arg(problem.field);
+    case AttemptFailure::HistoryUnavailable:
+      return tr("This attempt is not stored: the history refused it (%1).").arg(problem.driverMessage);
+    case AttemptFailure::RecordingUnreadable:
+      return tr("The recording %1 could not be replayed for scoring.").arg(problem.file);
+    case AttemptFailure::ScoreNotStored:
+      return tr("The score could not be stored (%1).").arg(problem.driverMessage);
+    case AttemptFailure::AbandonNotStored:
+      return tr("The history could not mark the attempt abandoned (%1).").arg(problem.driverMessage);
   }
-  eventsSeen_ = events.size();
-}
-
-void AttemptPage::finish() {
-  if (!active_) return;
-  updateProgress();
-  stopRunning();  // finishes the recording file
-  active_ = false;
-  finish_->setEnabled(false);
-  abandon_->setEnabled(false);
-  status_->setText(tr("Scoring…"));
-
-  // the graded replay runs off the GUI thread; its result comes back queued
-  const std::string scene = scenePath_.toStdString();
-  const std::string recording = recordingPath_.toStdString();
-  const assessment::Rubric rubric = rubric_;
-  AttemptResult base;
-  base.lessonIndex = lessonIndex_;
-  base.mode = attemptMode_;
-  base.attemptId = attemptId_;
-  base.recordingPath = recordingPath_;
-  if (const sim::SceneDef* def = runner_->sceneDef())
-    for (const sim::SceneVessel& v : def->vessels) base.vessels.push_back(v.def);
-  if (scoring_.joinable()) scoring_.join();
-  // a std::thread: joining it is a synchronisation ThreadSanitizer sees (QThread::wait() is not)
-  scoring_ = std::thread([this, scene, recording, rubric, base] {
-    AttemptResult result = base;
-    auto replayed = assessment::replayAttempt(scene, recording);
-    if (auto* attempt = std::get_if<assessment::Attempt>(&replayed)) {
-      result.score = assessment::scoreAttempt(*attempt, rubric);
-      result.pierces = attempt->pierces;
-      result.scored = true;
-    }
-    QMetaObject::invokeMethod(this, [this, result] { scored(result); }, Qt::QueuedConnection);
-  });
-}
-
-void AttemptPage::scored(const AttemptResult& scoredResult) {
-  AttemptResult result = scoredResult;
-  if (!result.scored) result.error = tr("The recording %1 could not be replayed for scoring.").arg(result.recordingPath);
-  if (result.scored && result.attemptId != 0) {
-    QFile file(result.recordingPath);
-    const QByteArray bytes = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-    result.stored = history_->finishAttempt(result.attemptId, result.score, bytes);
-    if (!result.stored)
-      result.error = tr("The score could not be stored (%1).").arg(history_->lastError().driverMessage);
-  }
-  status_->clear();
-  Q_EMIT finished(result);
+  return {};
 }
 
 int AttemptPage::mapKey(int key, const QString& keyMap) {

@@ -19,6 +19,7 @@ QString FeedbackText::metricName(const std::string& key) {
       {"max_stretch", QT_TR_NOOP("Largest tissue stretch")},
       {"tissue_damage", QT_TR_NOOP("Tissue damage")},
       {"passages", QT_TR_NOOP("Wall passages")},
+      {"arc_deviation", QT_TR_NOOP("Needle off its arc")},
       {"entry_angle", QT_TR_NOOP("Entry angle")},
       {"exit_angle", QT_TR_NOOP("Exit angle")},
       {"bite", QT_TR_NOOP("Bite")},
@@ -50,6 +51,9 @@ QString FeedbackText::advice(const std::string& key) {
       {"never.suture_break", QT_TR_NOOP("The suture broke: pull more gently.")},
       {"never.tissue_tear", QT_TR_NOOP("The tissue was torn or over-stretched.")},
       {"pierce.not_done", QT_TR_NOOP("The needle did not pass through the wall.")},
+      {"pierce.extra_passages", QT_TR_NOOP("Pass each wall once: every extra passage injures it.")},
+      {"pierce.off_arc", QT_TR_NOOP("Turn the needle along its curve instead of pushing it.")},
+      {"never.needle_dragged", QT_TR_NOOP("The needle was dragged sideways through the tissue, not turned along its curve.")},
       {"stitch.not_completed", QT_TR_NOOP("The stitch was not completed through both ends.")},
       {"stitch.too_few", QT_TR_NOOP("Too few stitches.")},
       {"stitch.too_many", QT_TR_NOOP("More stitches than needed.")},
@@ -64,6 +68,8 @@ QString FeedbackText::advice(const std::string& key) {
   const std::string metric = key.substr(0, dot);
   const std::string kind = dot == std::string::npos ? std::string() : key.substr(dot + 1);
   if (kind == "missing") return tr("%1: not measured in this attempt.").arg(metricName(metric));
+  if (kind == "not_applicable")
+    return tr("%1: not applicable to this input; not counted.").arg(metricName(metric));
   if (kind == "too_high") return tr("%1 is too high.").arg(metricName(metric));
   if (kind == "too_low") return tr("%1 is too low.").arg(metricName(metric));
   return QString::fromStdString(key);

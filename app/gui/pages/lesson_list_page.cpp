@@ -1,6 +1,7 @@
 #include "gui/pages/lesson_list_page.h"
 
 #include "microsim/assessment/scoring/rubric.h"
+#include "microsim/assessment/storage/attempt_store.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -70,7 +71,7 @@ void LessonListPage::show(const std::vector<lesson::Lesson>& lessons, const asse
   heading_->setText(tr("<h2>Lessons for %1</h2>").arg(name.toHtmlEscaped()));
   QList<assessment::AttemptSummary> attempts;
   if (history_ && history_->isOpen() && viewer.userId != 0)
-    attempts = history_->attempts(viewer, viewer.userId);
+    attempts = assessment::AttemptStore(*history_).list(viewer, viewer.userId);
 
   statuses_.clear();
   table_->setRowCount(static_cast<int>(lessons_.size()));

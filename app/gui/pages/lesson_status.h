@@ -4,7 +4,7 @@
 //   Practised   attempts, but no finished Test attempt at the pass mark;
 //   Passed      a finished Test attempt at the pass mark;
 //   Proficient  the pass mark on two consecutive finished Test attempts (assessment::proficient).
-// Learn attempts count as practice only; interrupted attempts count as practice.
+// Learn attempts count as practice only; interrupted and abandoned attempts count as practice.
 
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/storage/history_types.h"

@@ -74,7 +74,7 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
   if (!result.scored) {
     score_->setText(tr("<span style='font-size:28pt'>–</span>"));
     verdict_->setText(tr("Not scored"));
-    message_->setText(result.error);
+    message_->setText(result.problem ? AttemptPage::describe(*result.problem) : QString());
     pierces_->clear();
     return;
   }
@@ -86,7 +86,7 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
   QStringList notes;
   for (const std::string& never : s.neverEvents) notes << FeedbackText::advice(never);
   if (s.truncated) notes << tr("Scored from an incomplete recording.");
-  if (!result.error.isEmpty()) notes << result.error;
+  if (result.problem) notes << AttemptPage::describe(*result.problem);
   message_->setText(notes.join(QLatin1Char('\n')));
 
   const QString units = settings::Tunables::value(settings::unitsKey()).toString();

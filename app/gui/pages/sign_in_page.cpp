@@ -1,5 +1,7 @@
 #include "gui/pages/sign_in_page.h"
 
+#include "microsim/assessment/storage/people_store.h"
+
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -88,7 +90,7 @@ void SignInPage::refresh() {
     trainees_->setCurrentRow(0);
     return;
   }
-  for (const assessment::Trainee& t : history_->trainees()) {
+  for (const assessment::Trainee& t : assessment::PeopleStore(*history_).trainees()) {
     if (t.role != Role::Trainee) continue;
     const QString text = t.group.isEmpty() ? t.name : tr("%1 (%2)").arg(t.name, t.group);
     auto* item = new QListWidgetItem(text, trainees_);
@@ -116,11 +118,12 @@ void SignInPage::createTrainee() {
     Q_EMIT signedIn({0, Role::Trainee}, name);
     return;
   }
-  const std::optional<qint64> id = history_->addTrainee(name);
+  assessment::PeopleStore people(*history_);
+  const std::optional<qint64> id = people.addTrainee(name);
   if (!id) {
-    showError(history_->lastError().error == HistoryError::NameTaken
+    showError(people.lastError().error == HistoryError::NameTaken
                   ? tr("A person called %1 already exists; pick them from the list.").arg(name)
-                  : tr("The trainee could not be created (%1).").arg(history_->lastError().driverMessage));
+                  : tr("The trainee could not be created (%1).").arg(people.lastError().driverMessage));
     return;
   }
   newName_->clear();
@@ -134,7 +137,7 @@ void SignInPage::signInInstructor() {
     return;
   }
   const QString name = instructorName_->text().trimmed();
-  const std::optional<qint64> id = history_->verifyInstructor(name, password_->text());
+  const std::optional<qint64> id = assessment::PeopleStore(*history_).verifyInstructor(name, password_->text());
   password_->clear();
   if (!id) {
     showError(tr("Unknown instructor or wrong password."));

@@ -67,6 +67,7 @@ std::vector<GridRow> buildGrid(const QList<assessment::Trainee>& people, const Q
       if (a.traineeId != person.id) continue;
       GridCell& cell = row.cells[a.lesson];
       ++cell.attempts;
+      if (a.status == AttemptStatus::Abandoned) ++cell.abandoned;
       if (a.status != AttemptStatus::Finished || !a.score) continue;
       ++cell.finished;
       cell.best = cell.best ? std::max(*cell.best, *a.score) : *a.score;

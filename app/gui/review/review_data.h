@@ -1,10 +1,11 @@
 #pragma once
 // What the review screens show, computed from what the history hands out: no SQL here and
-// no widgets. The page asks HistoryDatabase with the signed-in Viewer (the storage layer
+// no widgets. The page asks the history's stores with the signed-in Viewer (the storage layer
 // decides what that viewer may see) and passes the rows to these functions.
 //
 // Grid cell of one trainee and one lesson:
-//   attempts   every attempt (in progress and interrupted included);
+//   attempts   every attempt (in progress, interrupted and abandoned included);
+//   abandoned  those the trainee gave up on (confirmed), never scored;
 //   best       the highest stored score of the finished ones;
 //   passed     some finished attempt reached its rubric's pass mark (stored `passed`);
 //   proficient the rubric's pass mark on two consecutive finished Test attempts
@@ -55,6 +56,7 @@ class ReviewCatalog {
 struct GridCell {
   int attempts = 0;
   int finished = 0;
+  int abandoned = 0;
   std::optional<double> best;  ///< 0..100
   bool passed = false;
   bool proficient = false;

@@ -6,6 +6,11 @@
 #include "gui/review/trainee_history_view.h"
 #include "lesson/lesson.h"
 
+#include "microsim/assessment/storage/annotation_store.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
+#include "microsim/assessment/storage/people_store.h"
+
 #include <QComboBox>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -126,19 +131,21 @@ ReviewPage::~ReviewPage() = default;
 void ReviewPage::refresh() {
   // what this viewer may see: an instructor everyone, a trainee only themselves
   people_.clear();
+  assessment::PeopleStore people(history_);
   if (viewer_.role == Role::Instructor) {
-    for (const Trainee& t : history_.trainees()) {
+    for (const Trainee& t : people.trainees()) {
       if (t.role == Role::Trainee) people_ << t;
     }
-  } else if (auto self = history_.person(viewer_.userId)) {
+  } else if (auto self = people.person(viewer_.userId)) {
     people_ << *self;
   }
-  attempts_ = history_.attempts(viewer_);
-  if (!history_.lastError().ok()) say(tr("The history could not be read."), true);
+  assessment::AttemptStore attempts(history_);
+  attempts_ = attempts.list(viewer_);
+  if (!attempts.lastError().ok()) say(tr("The history could not be read."), true);
   lessons_ = catalog_->lessons(attempts_);
 
-  const QString me = [this] {
-    auto self = history_.person(viewer_.userId);
+  const QString me = [this, &people] {
+    auto self = people.person(viewer_.userId);
     return self ? self->name : QString();
   }();
   who_->setText(viewer_.role == Role::Instructor ? tr("Instructor: %1").arg(me) : tr("Trainee: %1").arg(me));
@@ -212,7 +219,9 @@ void ReviewPage::buildGrid() {
         if (cell.proficient) text += QStringLiteral("★");
         item->setText(text);
         item->setBackground(cellColour(cell));
-        item->setToolTip(tr("%n attempt(s), %1 finished", nullptr, cell.attempts).arg(cell.finished));
+        item->setToolTip(tr("%n attempt(s): %1 finished, %2 abandoned", nullptr, cell.attempts)
+                             .arg(cell.finished)
+                             .arg(cell.abandoned));
       }
       grid_->setItem(r, kFixedColumns + c, item);
     }
@@ -262,14 +271,14 @@ void ReviewPage::showHistory() {
   const QList<AttemptSummary> done = finishedAttempts(attempts_, trainee->id, lesson);
   QList<QList<assessment::StoredMetric>> metrics;
   for (const AttemptSummary& a : done) {
-    auto detail = history_.attempt(viewer_, a.id);
+    auto detail = assessment::readAttemptDetail(history_, viewer_, a.id);
     metrics << (detail ? detail->metrics : QList<assessment::StoredMetric>{});
   }
   historyView_->setHistory(done, metrics, catalog_->rubric(lesson));
 }
 
 void ReviewPage::showAttempt(qint64 attemptId) {
-  auto detail = history_.attempt(viewer_, attemptId);
+  auto detail = assessment::readAttemptDetail(history_, viewer_, attemptId);
   if (!detail) {
     say(tr("That attempt could not be read."), true);
     return;
@@ -282,8 +291,9 @@ void ReviewPage::showAttempt(qint64 attemptId) {
 }
 
 void ReviewPage::annotate(qint64 attemptId, const QString& note) {
-  if (!history_.annotate(viewer_, attemptId, note)) {
-    say(history_.lastError().error == assessment::HistoryError::Forbidden
+  assessment::AnnotationStore notes(history_);
+  if (!notes.add(viewer_, attemptId, note)) {
+    say(notes.lastError().error == assessment::HistoryError::Forbidden
             ? tr("Only instructors can add notes.")
             : tr("The note could not be stored."),
         true);

@@ -5,7 +5,7 @@
 //             filtered by group;
 //   History   one trainee in one lesson: score and key-metric charts, the attempts;
 //   Attempt   one attempt's metrics, pierces, annotations and 3D replay.
-// Everything shown comes from HistoryDatabase calls made with the signed-in Viewer; the
+// Everything shown comes from the history's stores, asked with the signed-in Viewer; the
 // storage layer decides what that viewer may see (a trainee gets only their own attempts),
 // and the page shows exactly that. Export: the CSV of every visible attempt, and the shown
 // trainee's PDF report; without a preset path each asks for a file.

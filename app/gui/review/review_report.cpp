@@ -4,6 +4,8 @@
 #include "gui/review/review_text.h"
 #include "gui/save_file.h"
 
+#include "microsim/assessment/storage/attempts_csv.h"
+
 #include <QChart>
 #include <QDateTime>
 #include <QGraphicsScene>
@@ -104,9 +106,9 @@ bool ReviewReport::writeCsv(assessment::HistoryDatabase& history, const assessme
     fail(error, tr("Cannot write %1: %2").arg(path, why));
     return false;
   }
-  if (!history.exportCsv(viewer, *file.device())) {
+  const assessment::HistoryStatus status = assessment::exportAttemptsCsv(history, viewer, *file.device());
+  if (!status.ok()) {
     file.cancel();
-    const assessment::HistoryStatus status = history.lastError();
     fail(error, status.error == assessment::HistoryError::Forbidden
                     ? tr("You may not export these attempts.")
                     : tr("The export failed: %1").arg(status.driverMessage));

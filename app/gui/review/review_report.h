@@ -1,5 +1,5 @@
 #pragma once
-// The review's files: the CSV export (HistoryDatabase::exportCsv, RFC 4180, exactly the
+// The review's files: the CSV export (assessment::exportAttemptsCsv, RFC 4180, exactly the
 // attempts the viewer may see) and a trainee's PDF report (QPdfWriter, A4): a header with
 // name, group and date, the table of every attempt, and per lesson the score chart with
 // its pass mark, drawn as vectors.

@@ -3,6 +3,10 @@
 #include "gui/review/review_page.h"
 #include "lesson/lesson.h"
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/annotation_store.h"
+#include "microsim/assessment/storage/attempt_store.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -43,10 +47,11 @@ assessment::AttemptScore demoScore(const assessment::Rubric& rubric, const std::
 
 bool fillDemoHistory(assessment::HistoryDatabase& db, qint64& instructor) {
   db.setPasswordIterations(1000);
-  const auto grey = db.addInstructor(QStringLiteral("Dr. Grey"), QStringLiteral("demo password"));
-  const auto ana = db.addTrainee(QStringLiteral("Ana Ruiz"), QStringLiteral("Residents 2026"));
-  const auto ben = db.addTrainee(QStringLiteral("Ben Okafor"), QStringLiteral("Residents 2026"));
-  const auto chloe = db.addTrainee(QStringLiteral("Chloé Martin"), QStringLiteral("Fellows"));
+  assessment::PeopleStore people(db);
+  const auto grey = people.addInstructor(QStringLiteral("Dr. Grey"), QStringLiteral("demo password"));
+  const auto ana = people.addTrainee(QStringLiteral("Ana Ruiz"), QStringLiteral("Residents 2026"));
+  const auto ben = people.addTrainee(QStringLiteral("Ben Okafor"), QStringLiteral("Residents 2026"));
+  const auto chloe = people.addTrainee(QStringLiteral("Chloé Martin"), QStringLiteral("Fellows"));
   if (!grey || !ana || !ben || !chloe) return false;
   instructor = *grey;
 
@@ -61,10 +66,12 @@ bool fillDemoHistory(assessment::HistoryDatabase& db, qint64& instructor) {
   const auto stitch = rubric("03_single_stitch");
   if (!orientation || !entry || !stitch) return false;
 
+  assessment::AttemptStore attempts(db);
+  assessment::ScoreStore scores(db);
   const auto add = [&](qint64 who, const assessment::Rubric& r, AttemptMode mode,
                        const std::map<std::string, double>& values) {
-    const auto id = db.beginAttempt(who, QString::fromStdString(r.id), mode);
-    return id && db.finishAttempt(*id, demoScore(r, values), {});
+    const auto id = attempts.begin(who, QString::fromStdString(r.id), mode);
+    return id && scores.finish(*id, demoScore(r, values), {});
   };
   bool ok = true;
   // Ana improves steadily at needle entry and becomes proficient
@@ -119,9 +126,9 @@ QStringList writeReviewScreenshots(const QString& directory) {
     if (!saveReviewShot(page, out.filePath(QStringLiteral("review-grid.png")), written)) return {};
     page.showTrainee(ana, QStringLiteral("02_needle_entry"));
     if (!saveReviewShot(page, out.filePath(QStringLiteral("review-history.png")), written)) return {};
-    const auto attempts = db.attempts({instructor, assessment::Role::Instructor}, ana);
+    const auto attempts = assessment::AttemptStore(db).list({instructor, assessment::Role::Instructor}, ana);
     if (attempts.size() > 2) {
-      db.annotate({instructor, assessment::Role::Instructor}, attempts[2].id,
+      assessment::AnnotationStore(db).add({instructor, assessment::Role::Instructor}, attempts[2].id,
                   QStringLiteral("Better: the needle now enters almost perpendicular. Watch the bite length."));
       page.showAttempt(attempts[2].id);
       if (!saveReviewShot(page, out.filePath(QStringLiteral("review-attempt.png")), written)) return {};

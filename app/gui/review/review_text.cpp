@@ -21,6 +21,7 @@ QString ReviewText::metricName(const QString& key) {
       {QStringLiteral("max_stretch"), QT_TR_NOOP("Largest tissue stretch")},
       {QStringLiteral("tissue_damage"), QT_TR_NOOP("Tissue damage")},
       {QStringLiteral("passages"), QT_TR_NOOP("Wall passages")},
+      {QStringLiteral("arc_deviation"), QT_TR_NOOP("Needle off its arc")},
       {QStringLiteral("entry_angle"), QT_TR_NOOP("Entry angle")},
       {QStringLiteral("exit_angle"), QT_TR_NOOP("Exit angle")},
       {QStringLiteral("bite"), QT_TR_NOOP("Bite")},
@@ -51,6 +52,9 @@ QString ReviewText::feedback(const QString& key) {
       {QStringLiteral("tissue.over_stretched"), QT_TR_NOOP("The tissue was stretched too far.")},
       {QStringLiteral("handling.too_many_regrasps"), QT_TR_NOOP("Too many re-grasps.")},
       {QStringLiteral("pierce.not_done"), QT_TR_NOOP("The wall was not passed with the needle.")},
+      {QStringLiteral("pierce.extra_passages"), QT_TR_NOOP("The wall was passed more often than needed.")},
+      {QStringLiteral("pierce.off_arc"), QT_TR_NOOP("The needle was pushed rather than turned along its curve.")},
+      {QStringLiteral("never.needle_dragged"), QT_TR_NOOP("The needle was dragged sideways through the tissue.")},
       {QStringLiteral("entry_angle.too_oblique"), QT_TR_NOOP("The needle entered too obliquely; enter perpendicular to the wall.")},
       {QStringLiteral("exit_angle.too_oblique"), QT_TR_NOOP("The needle came out too obliquely; follow its curve.")},
       {QStringLiteral("bite.too_long"), QT_TR_NOOP("Bites too far from the edge.")},
@@ -68,10 +72,13 @@ QString ReviewText::feedback(const QString& key) {
   if (key.isEmpty()) return {};
   auto it = sentences.constFind(key);
   if (it != sentences.cend()) return tr(it.value());
-  // the scoring's default keys: "<metric>.missing", "<metric>.too_high", "<metric>.too_low"
+  // the scoring's default keys: "<metric>.missing", "<metric>.not_applicable",
+  // "<metric>.too_high", "<metric>.too_low"
   const QString metric = metricName(key.section(QLatin1Char('.'), 0, 0));
   const QString kind = key.section(QLatin1Char('.'), 1);
   if (kind == QStringLiteral("missing")) return tr("%1: not measured in this attempt.").arg(metric);
+  if (kind == QStringLiteral("not_applicable"))
+    return tr("%1: not applicable to this input; not counted.").arg(metric);
   if (kind == QStringLiteral("too_high")) return tr("%1 too high.").arg(metric);
   if (kind == QStringLiteral("too_low")) return tr("%1 too low.").arg(metric);
   return key;
@@ -86,6 +93,7 @@ QString ReviewText::status(assessment::AttemptStatus status) {
     case assessment::AttemptStatus::InProgress: return tr("In progress");
     case assessment::AttemptStatus::Finished: return tr("Finished");
     case assessment::AttemptStatus::Interrupted: return tr("Interrupted");
+    case assessment::AttemptStatus::Abandoned: return tr("Abandoned");
   }
   return {};
 }

@@ -1,10 +1,13 @@
 #pragma once
 // The simulation tunables applied to a lesson's scene: when the settings ask for another
-// tissue solver or iteration budget than the scene file gives, a copy of the scene with
-// those fields replaced is written to a private folder (tool meshes and imported surfaces
-// made absolute, since they are relative to the original file). The attempt then runs and
-// is graded on that copy, so its recording replays with the solver it was made with.
+// tissue solver or iteration budget than the scene file gives, the scene definition is
+// changed in memory after loading (no copy of the file is written). The attempt then runs,
+// and is graded, on that definition, and its recording's metadata names the solver it was
+// made with.
 
+#include "microsim/sim/scene/scene_def.h"
+
+#include <QJsonObject>
 #include <QString>
 
 namespace microsim::gui::settings {
@@ -18,9 +21,13 @@ struct SolverOverride {
 /// The override the stored settings ask for.
 SolverOverride solverOverrideFromSettings();
 
-/// `scenePath` itself when `override` changes nothing; else the path of the patched copy in
-/// `folder`. Empty with `error` set when the scene cannot be read or the copy not written.
-QString applySolverOverride(const QString& scenePath, const SolverOverride& override,
-                            const QString& folder, QString* error = nullptr);
+/// Applies `override` to `def`: another solver starts from its own defaults (the scene's
+/// parameters belong to the scene's solver) with the scene's iteration budget, then the
+/// budget is replaced when given. False, with `def` unchanged, when the solver is unknown.
+bool applySolverOverride(sim::SceneDef& def, const SolverOverride& override);
+
+/// The override as a recording's metadata states it, the shape of a scene file's "solver"
+/// block: {"name": ..., "iterations": ...}; empty when it changes nothing.
+QJsonObject solverOverrideJson(const sim::SceneDef& def, const SolverOverride& override);
 
 }  // namespace microsim::gui::settings

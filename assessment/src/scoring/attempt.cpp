@@ -69,6 +69,8 @@ Attempt assembleAttempt(const sim::SceneDef& def, std::vector<sim::SceneEvent> e
   a.duration = a.steps * a.stepDt;
   a.maxStretch = maxStretch;
   a.sceneFile = def.file;
+  if (def.needle && def.needle->suture.needleShape == sim::suture::NeedleShape::Curved)
+    a.needleRadius = def.needle->suture.needleRadius;
 
   // the frames as the scene used them: a rejected one repeats the last accepted one
   std::optional<sim::InputFrame> last;
@@ -117,14 +119,19 @@ Attempt AttemptRecorder::attempt(const sim::Scene& scene) const {
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const sim::Recording& recording,
                                                  bool truncated) {
-  auto opened = sim::openScene(scenePath, sim::StepMode::Deterministic);
-  if (auto* e = std::get_if<sim::SceneError>(&opened)) {
+  sim::SceneDefLoad loaded = sim::loadSceneDef(scenePath);
+  if (auto* e = std::get_if<sim::SceneError>(&loaded)) {
     ReplayError err;
     err.kind = ReplayErrorKind::Scene;
     err.sceneError = *e;
     return err;
   }
-  sim::Scene& scene = *std::get<std::unique_ptr<sim::Scene>>(opened);
+  return replayAttempt(std::get<sim::SceneDef>(loaded), recording, truncated);
+}
+
+std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def, const sim::Recording& recording,
+                                                 bool truncated) {
+  sim::Scene scene(def, sim::StepMode::Deterministic);
   AttemptRecorder recorder;
   for (const sim::InputFrame& f : recording.frames) {
     scene.step(f);

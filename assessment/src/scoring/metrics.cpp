@@ -10,7 +10,7 @@ namespace microsim::assessment {
 
 namespace {
 
-constexpr std::array<MetricInfo, 22> kCatalogue{{
+constexpr std::array<MetricInfo, 23> kCatalogue{{
     {"time", "s"},
     {"path_length", "mm"},
     {"path_length_left", "mm"},
@@ -23,6 +23,7 @@ constexpr std::array<MetricInfo, 22> kCatalogue{{
     {"max_stretch", "1"},
     {"tissue_damage", "count"},
     {"passages", "count"},
+    {"arc_deviation", "mm"},
     {"entry_angle", "deg"},
     {"exit_angle", "deg"},
     {"bite", "mm"},
@@ -122,6 +123,7 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
       attempt.maxStretch,
       static_cast<double>(tissueDamageEvents(attempt.events)),
       static_cast<double>(p.size()),
+      needleArcDeviationMm(attempt),
       meanOf(p, [](const PierceMetrics& x) { return x.entryAngleDeg; }),
       meanOf(p, [](const PierceMetrics& x) { return x.exitAngleDeg; }),
       meanOf(p, [](const PierceMetrics& x) { return x.biteMm; }),
@@ -136,6 +138,14 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
   m.values.reserve(kCatalogue.size());
   for (std::size_t i = 0; i < kCatalogue.size(); ++i)
     m.values.push_back({std::string(kCatalogue[i].key), values[i], std::string(kCatalogue[i].unit)});
+
+  // stepped input: its finite differences measure the steps, not the hand
+  if (steppedInput(attempt))
+    for (MetricValue& v : m.values)
+      if (v.key == "smoothness" || v.key == "idle_time") {
+        v.value = kNaN;
+        v.applicable = false;
+      }
   return m;
 }
 

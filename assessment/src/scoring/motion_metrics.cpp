@@ -123,6 +123,21 @@ double idleTime(const Attempt& attempt, const MotionParams& params) {
   return idle;
 }
 
+bool steppedInput(const Attempt& attempt) {
+  int moved = 0;
+  int stillAfterwards = 0;
+  for (const std::vector<MotionSample>& samples : attempt.motion)
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      if (!bothTracked(samples[i - 1], samples[i]) || samples[i].position == samples[i - 1].position)
+        continue;
+      ++moved;
+      if (i + 1 < samples.size() && bothTracked(samples[i], samples[i + 1]) &&
+          samples[i + 1].position == samples[i].position)
+        ++stillAfterwards;
+    }
+  return moved > 0 && 2 * stillAfterwards >= moved;
+}
+
 int regrasps(const std::vector<sim::SceneEvent>& events) {
   using K = sim::SceneEventKind;
   std::array<bool, sim::kHandCount> released{};

@@ -54,6 +54,11 @@ AttemptScore scoreMetrics(const std::vector<MetricValue>& values, const Rubric& 
     const MetricValue* v = find(m.key);
     MetricScore s = v ? scoreMetric(m, v->value, v->unit)
                       : scoreMetric(m, std::nan(""), std::string());
+    if (v && !v->applicable) {
+      s.applicable = false;
+      s.weight = 0.0;
+      s.feedback = m.key + ".not_applicable";
+    }
     weighted += s.weight * s.points;
     weights += s.weight;
     out.metrics.push_back(std::move(s));

@@ -1,13 +1,8 @@
-// HistoryDatabase: backup and restore of an SQLite history, and CSV export.
-#include "microsim/assessment/storage/csv.h"
+// HistoryDatabase: backup and restore of an SQLite history.
 #include "microsim/assessment/storage/history_database.h"
-
-#include "storage/sql_util.h"
 
 #include <QFile>
 #include <QFileInfo>
-#include <QHash>
-#include <QLocale>
 #include <QSaveFile>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -55,8 +50,6 @@ BackupCheck checkBackup(const QString& file, QString* message) {
   QSqlDatabase::removeDatabase(name);
   return result;
 }
-
-QString number(double v) { return QString::number(v, 'g', QLocale::FloatingPointShortest); }
 
 }  // namespace
 
@@ -114,30 +107,6 @@ bool HistoryDatabase::restore(const QString& fromFile) {
   const DatabaseStatus reopened = open(path);
   if (!copied) return fail(HistoryError::FileError, copyError);
   if (!reopened.ok()) return fail(HistoryError::QueryFailed, reopened.driverMessage);
-  return succeed();
-}
-
-bool HistoryDatabase::exportCsv(const Viewer& viewer, QIODevice& out) {
-  const QList<AttemptSummary> rows = attempts(viewer);
-  if (!last_.ok()) return false;
-  QHash<qint64, Trainee> people;
-  for (const Trainee& t : trainees()) people.insert(t.id, t);
-
-  QString text = csvRecord({QStringLiteral("attempt"), QStringLiteral("trainee"), QStringLiteral("group"),
-                            QStringLiteral("lesson"), QStringLiteral("mode"), QStringLiteral("status"),
-                            QStringLiteral("started"), QStringLiteral("finished"), QStringLiteral("score"),
-                            QStringLiteral("passed"), QStringLiteral("rubric"), QStringLiteral("rubric_version")});
-  for (const AttemptSummary& a : rows) {
-    const Trainee who = people.value(a.traineeId);
-    const bool scored = a.score.has_value();
-    text += csvRecord({QString::number(a.id), who.name, who.group, a.lesson, sql::modeText(a.mode),
-                       sql::statusText(a.status), a.started.toString(Qt::ISODateWithMs),
-                       a.finished.isValid() ? a.finished.toString(Qt::ISODateWithMs) : QString(),
-                       scored ? number(*a.score) : QString(),
-                       scored ? (a.passed ? QStringLiteral("1") : QStringLiteral("0")) : QString(),
-                       a.rubricId, scored ? QString::number(a.rubricVersion) : QString()});
-  }
-  if (out.write(text.toUtf8()) < 0) return fail(HistoryError::FileError, out.errorString());
   return succeed();
 }
 

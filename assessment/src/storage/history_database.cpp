@@ -1,6 +1,6 @@
 #include "microsim/assessment/storage/history_database.h"
 
-#include "storage/sql_util.h"
+#include "microsim/assessment/storage/attempt_store.h"
 
 #include <QAtomicInt>
 #include <QCoreApplication>
@@ -12,6 +12,9 @@
 #include <QStandardPaths>
 #include <QSysInfo>
 #include <QUrl>
+
+#include <mutex>
+#include <utility>
 
 #ifdef Q_OS_UNIX
 #include <cerrno>
@@ -29,9 +32,27 @@ constexpr int kSqliteReadOnly = 8;
 constexpr int kSqliteCorrupt = 11;
 constexpr int kSqliteNotADb = 26;
 
-QString nextConnectionName() {
-  static QAtomicInt counter;
-  return QStringLiteral("microsim-history-%1").arg(counter.fetchAndAddRelaxed(1));
+QAtomicInt connectionCounter;
+
+// the SQLite session tags of this process's open connections: an attempt tagged with one
+// of our pid's tags that is not here was begun by a connection closed since. Connections
+// open and close on several threads; a std::mutex, which ThreadSanitizer follows.
+struct OpenSessions {
+  std::mutex mutex;
+  QSet<QString> tags;
+};
+OpenSessions& openSessions() {
+  static OpenSessions sessions;
+  return sessions;
+}
+
+struct AccessObserverSlot {
+  std::mutex mutex;
+  HistoryDatabase::AccessObserver observer;
+};
+AccessObserverSlot& accessObserverSlot() {
+  static AccessObserverSlot slot;
+  return slot;
 }
 
 DatabaseError classify(const QSqlError& error) {
@@ -77,7 +98,8 @@ bool processMayBeAlive(qint64 pid) {
 
 }  // namespace
 
-HistoryDatabase::HistoryDatabase() : connectionName_(nextConnectionName()) {}
+HistoryDatabase::HistoryDatabase()
+    : connectionName_(QStringLiteral("microsim-history-%1").arg(connectionCounter.fetchAndAddRelaxed(1))) {}
 
 HistoryDatabase::~HistoryDatabase() { close(); }
 
@@ -92,7 +114,9 @@ bool HistoryDatabase::isUrl(const QString& location) {
 }
 
 DatabaseStatus HistoryDatabase::open(const QString& location) {
+  notifyAccess();
   close();
+  location_ = location;
   // the connection is removed only once the opening functions' handles to it are gone
   DatabaseStatus status = isUrl(location) ? openPostgres(location) : openSqlite(location);
   if (!status.ok()) close();
@@ -122,7 +146,15 @@ DatabaseStatus HistoryDatabase::openSqlite(const QString& path) {
       return failure(classify(q.lastError()), q.lastError().text());
   }
   q.finish();  // an open read would lock the tables a migration drops
-  session_ = QStringLiteral("%1@%2").arg(QCoreApplication::applicationPid()).arg(QSysInfo::machineHostName());
+  // pid@host#n: the process and, within it, this connection
+  session_ = QStringLiteral("%1@%2#%3")
+                 .arg(QCoreApplication::applicationPid())
+                 .arg(QSysInfo::machineHostName(), connectionName_.section(QLatin1Char('-'), -1));
+  {
+    OpenSessions& open = openSessions();
+    const std::lock_guard lock(open.mutex);
+    open.tags.insert(session_);
+  }
   path_ = info.absoluteFilePath();
   return finishOpen(db);
 }
@@ -164,62 +196,55 @@ DatabaseStatus HistoryDatabase::finishOpen(QSqlDatabase& db) {
     status.driverMessage = outcome.driverMessage;
     return status;
   }
-  interruptOrphanedAttempts();
+  AttemptStore(*this).interruptEndedSessions();
   last_ = {};
   return status;
 }
 
-void HistoryDatabase::interruptOrphanedAttempts() {
-  QSqlDatabase db = connection();
-  QSqlQuery q(db);
-  if (!q.exec(QStringLiteral("SELECT id, session FROM attempts WHERE status = 'in_progress'"))) return;
-  QList<qint64> orphans;
-  QSet<QString> liveBackends;
+bool HistoryDatabase::sessionEnded(const QString& session) {
+  if (session.isEmpty()) return true;
   if (driver_ == Driver::PostgreSQL) {
-    QSqlQuery live(db);
-    if (live.exec(QStringLiteral("SELECT pid FROM pg_stat_activity")))
-      while (live.next()) liveBackends.insert(QStringLiteral("pg:%1").arg(live.value(0).toLongLong()));
+    // pg:<backend pid>, ended when the server no longer runs that backend
+    QSqlQuery q(connection());
+    q.prepare(QStringLiteral("SELECT count(*) FROM pg_stat_activity WHERE pid = ?"));
+    q.addBindValue(session.mid(3).toLongLong());
+    return q.exec() && q.next() && q.value(0).toInt() == 0;
   }
-  const QString host = QSysInfo::machineHostName();
-  while (q.next()) {
-    const QString session = q.value(1).toString();
-    bool gone = session.isEmpty();
-    if (!gone && driver_ == Driver::PostgreSQL) {
-      gone = !liveBackends.contains(session);
-    } else if (!gone) {
-      // pid@host: only this machine's processes can be checked; our own pid may be another
-      // connection of this process
-      const qsizetype at = session.indexOf(QLatin1Char('@'));
-      const qint64 pid = session.left(at).toLongLong();
-      gone = session.mid(at + 1) == host && pid != QCoreApplication::applicationPid() &&
-             !processMayBeAlive(pid);
-    }
-    if (gone) orphans << q.value(0).toLongLong();
-  }
-  q.finish();
-  for (qint64 id : orphans) {
-    QSqlQuery u(db);
-    u.prepare(QStringLiteral(
-        "UPDATE attempts SET status = 'interrupted', finished_at = ? WHERE id = ? AND status = 'in_progress'"));
-    u.addBindValue(sql::now());
-    u.addBindValue(id);
-    u.exec();
-  }
+  // pid@host#n (pid@host before schema 4): only this machine's processes can be checked
+  const qsizetype at = session.indexOf(QLatin1Char('@'));
+  const qsizetype hash = session.indexOf(QLatin1Char('#'), at);
+  const qint64 pid = session.left(at).toLongLong();
+  const QString host = session.mid(at + 1, hash < 0 ? -1 : hash - at - 1);
+  if (at < 0 || host != QSysInfo::machineHostName()) return false;
+  if (pid != QCoreApplication::applicationPid()) return !processMayBeAlive(pid);
+  // ours: ended when its connection is closed; an untagged one may be any of ours
+  if (hash < 0) return false;
+  OpenSessions& open = openSessions();
+  const std::lock_guard lock(open.mutex);
+  return !open.tags.contains(session);
 }
 
 void HistoryDatabase::close() {
   if (QSqlDatabase::contains(connectionName_)) {
+    notifyAccess();
     {
       QSqlDatabase db = QSqlDatabase::database(connectionName_, false);
       db.close();
     }
     QSqlDatabase::removeDatabase(connectionName_);
   }
+  if (!session_.isEmpty()) {
+    OpenSessions& open = openSessions();
+    const std::lock_guard lock(open.mutex);
+    open.tags.remove(session_);
+  }
   path_.clear();
+  location_.clear();
   session_.clear();
 }
 
 bool HistoryDatabase::isOpen() const {
+  notifyAccess();
   return QSqlDatabase::contains(connectionName_) &&
          QSqlDatabase::database(connectionName_, false).isOpen();
 }
@@ -231,7 +256,20 @@ int HistoryDatabase::schemaVersion() {
 }
 
 QSqlDatabase HistoryDatabase::connection() const {
+  notifyAccess();
   return QSqlDatabase::database(connectionName_, false);
+}
+
+void HistoryDatabase::setAccessObserver(AccessObserver observer) {
+  AccessObserverSlot& slot = accessObserverSlot();
+  const std::lock_guard lock(slot.mutex);
+  slot.observer = std::move(observer);
+}
+
+void HistoryDatabase::notifyAccess() const {
+  AccessObserverSlot& slot = accessObserverSlot();
+  const std::lock_guard lock(slot.mutex);
+  if (slot.observer) slot.observer(*this);
 }
 
 bool HistoryDatabase::fail(HistoryError error, const QString& driverMessage) {
@@ -242,23 +280,6 @@ bool HistoryDatabase::fail(HistoryError error, const QString& driverMessage) {
 bool HistoryDatabase::succeed() {
   last_ = {};
   return true;
-}
-
-std::optional<Role> HistoryDatabase::storedRole(qint64 personId) {
-  QSqlQuery q(connection());
-  q.prepare(QStringLiteral("SELECT role FROM trainees WHERE id = ?"));
-  q.addBindValue(personId);
-  if (!q.exec() || !q.next()) return std::nullopt;
-  return sql::roleFromText(q.value(0).toString());
-}
-
-bool HistoryDatabase::mayView(const Viewer& viewer, std::optional<qint64> traineeId) {
-  if (!isOpen()) return fail(HistoryError::NotOpen);
-  const std::optional<Role> role = storedRole(viewer.userId);
-  if (!role || *role != viewer.role) return fail(HistoryError::Forbidden);
-  if (viewer.role == Role::Trainee && traineeId && *traineeId != viewer.userId)
-    return fail(HistoryError::Forbidden);
-  return succeed();
 }
 
 }  // namespace microsim::assessment

@@ -15,6 +15,38 @@ namespace {
 
 const QString kResourceDir = QStringLiteral(":/microsim/migrations");
 
+// rows that break a foreign key, as PRAGMA foreign_key_check lists them; empty when none
+QString foreignKeyViolations(const QSqlDatabase& db) {
+  QSqlQuery q(db);
+  if (!q.exec(QStringLiteral("PRAGMA foreign_key_check"))) return q.lastError().text();
+  QStringList rows;
+  while (q.next()) rows << QStringLiteral("%1 row %2 -> %3").arg(q.value(0).toString(), q.value(1).toString(), q.value(2).toString());
+  return rows.isEmpty() ? QString() : QStringLiteral("foreign key check failed: ") + rows.join(QStringLiteral(", "));
+}
+
+// SQLite's foreign key enforcement for the duration of the migrations: off, since a table
+// rebuild would otherwise cascade the old table's drop into its children (the pragma is a
+// no-op inside a transaction, so it is set around them); put back as it was afterwards
+class SqliteForeignKeysOff {
+ public:
+  explicit SqliteForeignKeysOff(const QSqlDatabase& db) : db_(db) {
+    if (driverOf(db_) != Driver::SQLite) return;
+    QSqlQuery q(db_);
+    wasOn_ = q.exec(QStringLiteral("PRAGMA foreign_keys")) && q.next() && q.value(0).toInt() == 1;
+    q.finish();
+    if (wasOn_) q.exec(QStringLiteral("PRAGMA foreign_keys = OFF"));
+  }
+  ~SqliteForeignKeysOff() {
+    if (wasOn_) QSqlQuery(db_).exec(QStringLiteral("PRAGMA foreign_keys = ON"));
+  }
+  SqliteForeignKeysOff(const SqliteForeignKeysOff&) = delete;
+  SqliteForeignKeysOff& operator=(const SqliteForeignKeysOff&) = delete;
+
+ private:
+  QSqlDatabase db_;
+  bool wasOn_ = false;
+};
+
 bool ensureMigrationsTable(QSqlDatabase& db) {
   QSqlQuery q(db);
   return q.exec(QStringLiteral(
@@ -102,6 +134,7 @@ MigrationOutcome migrate(QSqlDatabase& db, const std::vector<Migration>& migrati
     return outcome;
   }
 
+  const SqliteForeignKeysOff foreignKeysOff(db);
   for (const Migration& m : migrations) {
     if (m.version <= outcome.version) continue;
 
@@ -128,8 +161,10 @@ MigrationOutcome migrate(QSqlDatabase& db, const std::vector<Migration>& migrati
       q.addBindValue(QDateTime::currentDateTimeUtc().toString(Qt::ISODate));
       ok = q.exec();
     }
-    if (!ok || !db.commit()) {
-      outcome.driverMessage = q.lastError().text();
+    // what SQLite did not check while its foreign keys were off
+    const QString violations = ok && driverOf(db) == Driver::SQLite ? foreignKeyViolations(db) : QString();
+    if (!ok || !violations.isEmpty() || !db.commit()) {
+      outcome.driverMessage = violations.isEmpty() ? q.lastError().text() : violations;
       db.rollback();
       outcome.result = MigrationResult::Failed;
       outcome.failedVersion = m.version;

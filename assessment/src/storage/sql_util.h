@@ -43,6 +43,8 @@ inline QString statusText(AttemptStatus s) {
       return QStringLiteral("finished");
     case AttemptStatus::Interrupted:
       return QStringLiteral("interrupted");
+    case AttemptStatus::Abandoned:
+      return QStringLiteral("abandoned");
     case AttemptStatus::InProgress:
       break;
   }
@@ -51,6 +53,7 @@ inline QString statusText(AttemptStatus s) {
 inline AttemptStatus statusFromText(const QString& s) {
   if (s == QLatin1String("finished")) return AttemptStatus::Finished;
   if (s == QLatin1String("interrupted")) return AttemptStatus::Interrupted;
+  if (s == QLatin1String("abandoned")) return AttemptStatus::Abandoned;
   return AttemptStatus::InProgress;
 }
 

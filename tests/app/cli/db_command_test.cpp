@@ -2,6 +2,7 @@
 // PostgreSQL server of scripts/postgres-for-tests.sh when MICROSIM_TEST_PG_URL is set).
 #include "support/cli_runner.h"
 
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
 
 #include <QCoreApplication>
@@ -15,6 +16,7 @@
 
 namespace {
 
+using microsim::assessment::AttemptStore;
 using microsim::assessment::HistoryDatabase;
 using microsim::testing::CliRun;
 using microsim::testing::runCli;
@@ -65,12 +67,15 @@ TEST(DbCommand, AddListBackupRestoreAndExport) {
   EXPECT_EQ(people[1].toObject()[QStringLiteral("name")].toString(), evil);
   EXPECT_EQ(people[1].toObject()[QStringLiteral("group")].toString().toStdString(), "PGY-1");
 
-  // one attempt, so the export has a row
+  // one attempt, abandoned, so the export has a row with that status
   {
     HistoryDatabase h;
     ASSERT_TRUE(h.open(db).ok());
-    ASSERT_TRUE(h.beginAttempt(people[1].toObject()[QStringLiteral("id")].toInteger(), QStringLiteral("01_bite"),
-                               microsim::assessment::AttemptMode::Learn));
+    AttemptStore attempts(h);
+    const auto id = attempts.begin(people[1].toObject()[QStringLiteral("id")].toInteger(), QStringLiteral("01_bite"),
+                                   microsim::assessment::AttemptMode::Learn);
+    ASSERT_TRUE(id);
+    ASSERT_TRUE(attempts.abandon(*id));
   }
   const QString csv = dir.filePath(QStringLiteral("attempts.csv"));
   r = runCliWithInput(QStringList{QStringLiteral("db"), QStringLiteral("export-csv"), csv, QStringLiteral("--instructor"),
@@ -84,7 +89,7 @@ TEST(DbCommand, AddListBackupRestoreAndExport) {
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
   const QList<QByteArray> lines = readDbFile(csv).split('\n');
   ASSERT_EQ(lines.size(), 3);
-  EXPECT_TRUE(lines[1].contains("x'); DROP TABLE attempts;--,PGY-1,01_bite,learn,")) << lines[1].toStdString();
+  EXPECT_TRUE(lines[1].contains("x'); DROP TABLE attempts;--,PGY-1,01_bite,learn,abandoned,")) << lines[1].toStdString();
 
   const QString copy = dir.filePath(QStringLiteral("backup.sqlite"));
   r = runCli(QStringList{QStringLiteral("db"), QStringLiteral("backup"), copy} + on);

@@ -5,7 +5,9 @@
 #include "support/cli_runner.h"
 #include "support/golden_stitch.h"
 
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
 #include "microsim/sim/scene/recorded_scene.h"
 #include "microsim/sim/scene/recording.h"
 #include "support/scene_copy.h"
@@ -82,7 +84,7 @@ TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
                            QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                            QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  EXPECT_TRUE(r.out.contains(QStringLiteral("62.2"))) << r.out.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("70.0"))) << r.out.toStdString();
   EXPECT_NEAR(readScoreJson(out).value(QStringLiteral("score")).toDouble(),
               microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }
@@ -221,10 +223,10 @@ TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {
   microsim::assessment::HistoryDatabase history;
   ASSERT_TRUE(history.open(db).ok());
   qint64 ada = 0;
-  for (const auto& t : history.trainees())
+  for (const auto& t : microsim::assessment::PeopleStore(history).trainees())
     if (t.name == QStringLiteral("Ada")) ada = t.id;
   ASSERT_GT(ada, 0);
-  const auto attempts = history.attempts({ada, microsim::assessment::Role::Trainee});
+  const auto attempts = microsim::assessment::AttemptStore(history).list({ada, microsim::assessment::Role::Trainee});
   ASSERT_EQ(attempts.size(), 1);
   EXPECT_EQ(attempts[0].id, id);
   EXPECT_EQ(attempts[0].lesson, QStringLiteral("03_single_stitch"));

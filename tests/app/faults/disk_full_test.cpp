@@ -6,7 +6,9 @@
 #include "app/tracking/igtl_test_server.h"
 #include "tracking/pose_stream.h"
 
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
 #include "support/shipped_files.h"
 
 #include <QFile>
@@ -48,9 +50,9 @@ class DiskFull : public ::testing::Test {
     HistoryDatabase db;
     EXPECT_TRUE(db.open(path).ok());
     db.setPasswordIterations(1000);
-    const qint64 trainee = db.addTrainee(QStringLiteral("Ada")).value_or(0);
-    EXPECT_TRUE(db.addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).has_value());
-    EXPECT_TRUE(db.beginAttempt(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).has_value());
+    const qint64 trainee = microsim::assessment::PeopleStore(db).addTrainee(QStringLiteral("Ada")).value_or(0);
+    EXPECT_TRUE(microsim::assessment::PeopleStore(db).addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).has_value());
+    EXPECT_TRUE(microsim::assessment::AttemptStore(db).begin(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).has_value());
     return path;
   }
 
@@ -89,8 +91,8 @@ TEST_F(DiskFull, ScoreJsonIsAnErrorAndTheAttemptIsStillStored) {
   // the score went to the history before the JSON was attempted
   HistoryDatabase history;
   ASSERT_TRUE(history.open(db).ok());
-  const qint64 ines = history.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
-  const auto rows = history.attempts({ines, Role::Instructor});
+  const qint64 ines = microsim::assessment::PeopleStore(history).verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+  const auto rows = microsim::assessment::AttemptStore(history).list({ines, Role::Instructor});
   ASSERT_EQ(rows.size(), 2);
   EXPECT_TRUE(rows.back().score.has_value());
 }
@@ -175,9 +177,9 @@ TEST_F(DiskFull, DbOutputsAreErrorsAndTheHistoryIsUnchanged) {
 
   HistoryDatabase history;
   ASSERT_TRUE(history.open(db).ok());
-  EXPECT_EQ(history.trainees().size(), 2);
-  const qint64 ines = history.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
-  EXPECT_EQ(history.attempts({ines, Role::Instructor}).size(), 1);
+  EXPECT_EQ(microsim::assessment::PeopleStore(history).trainees().size(), 2);
+  const qint64 ines = microsim::assessment::PeopleStore(history).verifyInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+  EXPECT_EQ(microsim::assessment::AttemptStore(history).list({ines, Role::Instructor}).size(), 1);
 }
 
 }  // namespace

@@ -8,7 +8,10 @@
 #include "app/calibration/synthetic_pivot_stream.h"
 #include "app/tracking/igtl_test_server.h"
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 #include "tracking/pose_stream.h"
 
 #include <QFile>
@@ -95,15 +98,15 @@ TEST(Killed, BackupLeavesTheHistoryAndNoFileUnderTheBackupsName) {
     // big enough (40 recordings of 1 MB) that the copy takes a while
     HistoryDatabase history;
     ASSERT_TRUE(history.open(db).ok());
-    const qint64 trainee = history.addTrainee(QStringLiteral("Ada")).value_or(0);
+    const qint64 trainee = microsim::assessment::PeopleStore(history).addTrainee(QStringLiteral("Ada")).value_or(0);
     QByteArray recording(1 << 20, '\0');
     for (int i = 0; i < kAttempts; ++i) {
       for (qsizetype k = 0; k < recording.size(); k += 4096) recording[k] = static_cast<char>(i + k);
-      const qint64 id = history.beginAttempt(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).value_or(0);
+      const qint64 id = microsim::assessment::AttemptStore(history).begin(trainee, QStringLiteral("01_orientation"), AttemptMode::Test).value_or(0);
       AttemptScore score;
       score.score = i;
       score.rubricId = "r";
-      ASSERT_TRUE(history.finishAttempt(id, score, recording));
+      ASSERT_TRUE(microsim::assessment::ScoreStore(history).finish(id, score, recording));
     }
   }
   const QString backup = dir.filePath(QStringLiteral("backup.sqlite"));
@@ -127,8 +130,8 @@ TEST(Killed, BackupLeavesTheHistoryAndNoFileUnderTheBackupsName) {
     HistoryDatabase history;
     ASSERT_TRUE(history.open(path).ok()) << path.toStdString();
     history.setPasswordIterations(1000);
-    const qint64 ines = history.addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
-    const auto rows = history.attempts({ines, Role::Instructor});
+    const qint64 ines = microsim::assessment::PeopleStore(history).addInstructor(QStringLiteral("Ines"), QStringLiteral("s3cret-enough")).value_or(0);
+    const auto rows = microsim::assessment::AttemptStore(history).list({ines, Role::Instructor});
     ASSERT_EQ(rows.size(), kAttempts) << path.toStdString();
     EXPECT_EQ(rows.back().score.value_or(-1.0), kAttempts - 1.0);
   }

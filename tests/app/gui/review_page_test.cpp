@@ -5,10 +5,15 @@
 #include "gui/review/replay_player.h"
 #include "gui/review/review_charts.h"
 #include "gui/review/review_page.h"
+#include "gui/review/review_text.h"
 #include "gui/review/trainee_history_view.h"
 #include "gui/simulation_runner.h"
 #include "lesson/lesson.h"
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 #include "microsim/sim/scene/recording.h"
 
 #include <QBuffer>
@@ -118,10 +123,10 @@ class ReviewPageTest : public ::testing::Test {
     ASSERT_TRUE(dir_.isValid());
     history_.setPasswordIterations(1000);
     ASSERT_TRUE(history_.open(dir_.filePath(QStringLiteral("history.sqlite"))).ok());
-    instructorId_ = *history_.addInstructor(QStringLiteral("Dr Grey"), QStringLiteral("correct horse"));
-    ana_ = *history_.addTrainee(QStringLiteral("Ana"), QStringLiteral("Tuesday"));
+    instructorId_ = *assessment::PeopleStore(history_).addInstructor(QStringLiteral("Dr Grey"), QStringLiteral("correct horse"));
+    ana_ = *assessment::PeopleStore(history_).addTrainee(QStringLiteral("Ana"), QStringLiteral("Tuesday"));
     // a name that needs quoting in CSV
-    ben_ = *history_.addTrainee(QStringLiteral("Ben \"B\" O'Neil, Jr."), QStringLiteral("Thursday"));
+    ben_ = *assessment::PeopleStore(history_).addTrainee(QStringLiteral("Ben \"B\" O'Neil, Jr."), QStringLiteral("Thursday"));
 
     const assessment::Rubric entry = rubric(QStringLiteral("02_needle_entry"));
     const assessment::Rubric stitch = rubric(QStringLiteral("03_single_stitch"));
@@ -129,15 +134,15 @@ class ReviewPageTest : public ::testing::Test {
       finish(ana_, QStringLiteral("02_needle_entry"), AttemptMode::Test, score(entry, angle, time));
     }
     // one still in progress: counted in the grid, not plotted
-    ASSERT_TRUE(history_.beginAttempt(ana_, QStringLiteral("02_needle_entry"), AttemptMode::Learn));
+    ASSERT_TRUE(assessment::AttemptStore(history_).begin(ana_, QStringLiteral("02_needle_entry"), AttemptMode::Learn));
     finish(ben_, QStringLiteral("03_single_stitch"), AttemptMode::Learn, score(stitch, 30.0, 60.0));
     finish(ben_, QStringLiteral("03_single_stitch"), AttemptMode::Test, score(stitch, 10.0, 70.0));
   }
 
   void finish(qint64 trainee, const QString& lesson, AttemptMode mode, const assessment::AttemptScore& s) {
-    const std::optional<qint64> id = history_.beginAttempt(trainee, lesson, mode);
+    const std::optional<qint64> id = assessment::AttemptStore(history_).begin(trainee, lesson, mode);
     ASSERT_TRUE(id);
-    ASSERT_TRUE(history_.finishAttempt(*id, s, shortRecording(40)));
+    ASSERT_TRUE(assessment::ScoreStore(history_).finish(*id, s, shortRecording(40)));
   }
 
   // through the app's sign-in page, as an instructor does it
@@ -154,6 +159,16 @@ class ReviewPageTest : public ::testing::Test {
     return viewer.value_or(Viewer{});
   }
 
+  // the page's CSV export to file `name`, read back as records (the header first)
+  QList<QStringList> exportedCsv(ReviewPage& page, const QString& name) {
+    const QString path = dir_.filePath(name);
+    page.setCsvPath(path);
+    EXPECT_TRUE(page.exportCsv()) << page.message().toStdString();
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::ReadOnly));
+    return parseCsv(QString::fromUtf8(file.readAll()));
+  }
+
   QTemporaryDir dir_;
   assessment::HistoryDatabase history_;
   qint64 instructorId_ = 0;
@@ -168,14 +183,8 @@ TEST_F(ReviewPageTest, InstructorCsvRowsMatchTheDatabase) {
   page.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&page));
 
-  const QString path = dir_.filePath(QStringLiteral("export.csv"));
-  page.setCsvPath(path);
-  ASSERT_TRUE(page.exportCsv()) << page.message().toStdString();
-
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
-  const QList<AttemptSummary> stored = history_.attempts(instructor);
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("export.csv"));
+  const QList<AttemptSummary> stored = assessment::AttemptStore(history_).list(instructor);
   ASSERT_EQ(stored.size(), 6);
   ASSERT_EQ(records.size(), stored.size() + 1);
   const QStringList& header = records[0];
@@ -202,7 +211,7 @@ TEST_F(ReviewPageTest, GridShowsBestScoreAttemptsAndGroupsFilter) {
   EXPECT_EQ(page.grid()->rowCount(), 2);
 
   // Ana: 4 attempts in lesson 02, best score is the last (5°, 50 s: full points)
-  const QList<AttemptSummary> stored = history_.attempts(signInInstructor(), ana_);
+  const QList<AttemptSummary> stored = assessment::AttemptStore(history_).list(signInInstructor(), ana_);
   double best = 0;
   for (const AttemptSummary& a : stored) best = std::max(best, a.score.value_or(0.0));
   int lessonColumn = -1;
@@ -223,6 +232,40 @@ TEST_F(ReviewPageTest, GridShowsBestScoreAttemptsAndGroupsFilter) {
   EXPECT_EQ(page.shownTrainees().size(), 2);
 }
 
+TEST_F(ReviewPageTest, AbandonedAttemptsAreCountedNamedAndExported) {
+  assessment::AttemptStore attempts(history_);
+  const qint64 gaveUp = attempts.begin(ben_, QStringLiteral("03_single_stitch"), AttemptMode::Test).value_or(0);
+  ASSERT_TRUE(attempts.abandon(gaveUp));
+  const Viewer instructor = signInInstructor();
+  ReviewPage page(history_, instructor);
+
+  // the grid counts it among Ben's attempts and says how many were abandoned
+  int lessonColumn = -1;
+  for (int c = 0; c < page.grid()->columnCount(); ++c) {
+    if (page.lessonChooser()->itemData(c - 2).toString() == QStringLiteral("03_single_stitch")) lessonColumn = c;
+  }
+  ASSERT_GE(lessonColumn, 2);
+  const int benRow = page.shownTrainees()[0].id == ben_ ? 0 : 1;
+  const QTableWidgetItem* cell = page.grid()->item(benRow, lessonColumn);
+  EXPECT_TRUE(cell->text().contains(QStringLiteral("(3)"))) << cell->text().toStdString();
+  EXPECT_TRUE(cell->toolTip().contains(QStringLiteral("2 finished, 1 abandoned"))) << cell->toolTip().toStdString();
+
+  // its own word, apart from a crash's, in the detail, the PDF and the CSV
+  EXPECT_EQ(ReviewText::status(assessment::AttemptStatus::Abandoned), QStringLiteral("Abandoned"));
+  EXPECT_NE(ReviewText::status(assessment::AttemptStatus::Abandoned),
+            ReviewText::status(assessment::AttemptStatus::Interrupted));
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("with-abandoned.csv"));
+  ASSERT_FALSE(records.isEmpty());
+  const qsizetype status = records[0].indexOf(QStringLiteral("status"));
+  bool found = false;
+  for (const QStringList& row : records) {
+    if (row[0].toLongLong() != gaveUp) continue;
+    found = true;
+    EXPECT_EQ(row[status], QStringLiteral("abandoned"));
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST_F(ReviewPageTest, ScoreChartHasOnePointPerFinishedAttempt) {
   const Viewer instructor = signInInstructor();
   ReviewPage page(history_, instructor);
@@ -231,7 +274,7 @@ TEST_F(ReviewPageTest, ScoreChartHasOnePointPerFinishedAttempt) {
   QLineSeries* series = ReviewCharts::scoreSeries(page.historyView()->scoreChart());
   ASSERT_NE(series, nullptr);
   QList<double> expected;
-  for (const AttemptSummary& a : history_.attempts(instructor, ana_)) {
+  for (const AttemptSummary& a : assessment::AttemptStore(history_).list(instructor, ana_)) {
     if (a.status == assessment::AttemptStatus::Finished) expected << *a.score;
   }
   ASSERT_EQ(expected.size(), 3);
@@ -272,17 +315,12 @@ TEST_F(ReviewPageTest, TraineeSeesOnlyTheirOwnHistory) {
   EXPECT_EQ(page.grid()->rowCount(), 1);
   EXPECT_EQ(page.traineeChooser()->count(), 1);
 
-  const QString path = dir_.filePath(QStringLiteral("mine.csv"));
-  page.setCsvPath(path);
-  ASSERT_TRUE(page.exportCsv());
-  QFile file(path);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-  const QList<QStringList> records = parseCsv(QString::fromUtf8(file.readAll()));
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("mine.csv"));
   ASSERT_EQ(records.size(), 3);  // header and Ben's two attempts
   for (int i = 1; i < records.size(); ++i) EXPECT_EQ(records[i][1], QStringLiteral("Ben \"B\" O'Neil, Jr."));
 
   // a trainee reads their attempt but cannot annotate it
-  const QList<AttemptSummary> mine = history_.attempts(trainee);
+  const QList<AttemptSummary> mine = assessment::AttemptStore(history_).list(trainee);
   page.showAttempt(mine[0].id);
   EXPECT_EQ(page.detailView()->attemptId(), mine[0].id);
   EXPECT_FALSE(page.detailView()->addNoteButton()->isEnabled());
@@ -291,7 +329,7 @@ TEST_F(ReviewPageTest, TraineeSeesOnlyTheirOwnHistory) {
 TEST_F(ReviewPageTest, AttemptDetailShowsMetricsPiercesAndStoresANote) {
   const Viewer instructor = signInInstructor();
   ReviewPage page(history_, instructor);
-  const AttemptSummary first = history_.attempts(instructor, ana_)[0];
+  const AttemptSummary first = assessment::AttemptStore(history_).list(instructor, ana_)[0];
   page.showAttempt(first.id);
 
   AttemptDetailView* detail = page.detailView();
@@ -301,12 +339,12 @@ TEST_F(ReviewPageTest, AttemptDetailShowsMetricsPiercesAndStoresANote) {
 
   detail->noteEditor()->setPlainText(QStringLiteral("Enter perpendicular; '); DROP TABLE attempts; --"));
   QTest::mouseClick(detail->addNoteButton(), Qt::LeftButton);
-  const std::optional<assessment::AttemptDetail> stored = history_.attempt(instructor, first.id);
+  const std::optional<assessment::AttemptDetail> stored = assessment::readAttemptDetail(history_, instructor, first.id);
   ASSERT_TRUE(stored);
   ASSERT_EQ(stored->annotations.size(), 1);
   EXPECT_EQ(stored->annotations[0].note, QStringLiteral("Enter perpendicular; '); DROP TABLE attempts; --"));
   EXPECT_EQ(detail->annotationsList()->count(), 1);
-  EXPECT_EQ(history_.attempts(instructor).size(), 6);
+  EXPECT_EQ(assessment::AttemptStore(history_).list(instructor).size(), 6);
 }
 
 TEST_F(ReviewPageTest, ReplayStepsEveryStoredFrame) {
@@ -314,7 +352,7 @@ TEST_F(ReviewPageTest, ReplayStepsEveryStoredFrame) {
   page.resize(1200, 800);
   page.show();
   ASSERT_TRUE(QTest::qWaitForWindowExposed(&page));
-  page.showAttempt(history_.attempts(signInInstructor(), ben_)[0].id);
+  page.showAttempt(assessment::AttemptStore(history_).list(signInInstructor(), ben_)[0].id);
   ASSERT_TRUE(page.detailView()->startReplay());
   ReplayPlayer* player = page.detailView()->replayPlayer();
   ASSERT_NE(player, nullptr);

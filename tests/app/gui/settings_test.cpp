@@ -3,12 +3,15 @@
 #include "gui/settings/tunables.h"
 
 #include "microsim/sim/scene/scene.h"
+#include "microsim/sim/scene/scene_def.h"
 #include "support/shipped_files.h"
 
 #include <QComboBox>
 #include <QSettings>
 #include <QSpinBox>
-#include <QTemporaryDir>
+#include <QJsonObject>
+
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -66,19 +69,46 @@ TEST(Settings, StoresWhatTheDialogShowsAndChecksRanges) {
   QSettings().clear();
 }
 
-TEST(Settings, TheSolverOverrideGivesALoadableSceneWithThatSolver) {
-  QTemporaryDir dir;
-  EXPECT_EQ(applySolverOverride(kShippedScene, {QStringLiteral("scene"), 0}, dir.path()), kShippedScene);
-  QString error;
-  const QString patched = applySolverOverride(kShippedScene, {QStringLiteral("newton"), 12}, dir.path(), &error);
-  ASSERT_FALSE(patched.isEmpty()) << error.toStdString();
-  EXPECT_NE(patched, kShippedScene);
-  auto opened = sim::openScene(patched.toStdString());
-  ASSERT_TRUE(std::holds_alternative<std::unique_ptr<sim::Scene>>(opened))
-      << std::get<sim::SceneError>(opened).field;
-  const sim::SceneDef& def = std::get<std::unique_ptr<sim::Scene>>(opened)->def();
-  EXPECT_EQ(def.solver.name, "newton");
-  EXPECT_EQ(def.solver.iterations, 12);
+// the shipped scene's definition, as a test starts from it
+sim::SceneDef shippedSceneDef() {
+  sim::SceneDefLoad loaded = sim::loadSceneDef(kShippedScene.toStdString());
+  EXPECT_TRUE(std::holds_alternative<sim::SceneDef>(loaded));
+  return std::holds_alternative<sim::SceneDef>(loaded) ? std::get<sim::SceneDef>(loaded) : sim::SceneDef{};
+}
+
+TEST(Settings, TheSolverOverrideChangesTheSceneInMemoryOnly) {
+  const sim::SceneDef shipped = shippedSceneDef();
+
+  // "scene" and no budget: the scene as its file says, and no metadata
+  sim::SceneDef kept = shipped;
+  ASSERT_TRUE(applySolverOverride(kept, {QStringLiteral("scene"), 0}));
+  EXPECT_EQ(kept.solver.name, shipped.solver.name);
+  EXPECT_EQ(kept.solver.iterations, shipped.solver.iterations);
+  EXPECT_TRUE(solverOverrideJson(kept, {QStringLiteral("scene"), 0}).isEmpty());
+
+  // another solver starts from its defaults with the scene's budget, then the given budget
+  sim::SceneDef other = shipped;
+  ASSERT_TRUE(applySolverOverride(other, {QStringLiteral("qss"), 0}));
+  EXPECT_EQ(other.solver.name, "qss");
+  EXPECT_EQ(other.solver.iterations, shipped.solver.iterations);
+  EXPECT_EQ(other.solver.tolerance, sim::TissueSolverDef{}.tolerance);
+  sim::SceneDef budget = shipped;
+  const SolverOverride newton12{QStringLiteral("newton"), 12};
+  ASSERT_TRUE(applySolverOverride(budget, newton12));
+  EXPECT_EQ(budget.solver.name, "newton");
+  EXPECT_EQ(budget.solver.iterations, 12);
+  EXPECT_EQ(budget.file, shipped.file) << "the recording still names the lesson's own scene file";
+  EXPECT_EQ(solverOverrideJson(budget, newton12),
+            (QJsonObject{{QStringLiteral("name"), QStringLiteral("newton")}, {QStringLiteral("iterations"), 12}}));
+  // the changed definition builds a scene that steps with it
+  const sim::Scene scene(budget);
+  EXPECT_EQ(scene.def().solver.iterations, 12);
+
+  // an unknown solver is refused and changes nothing
+  sim::SceneDef unknown = shipped;
+  EXPECT_FALSE(applySolverOverride(unknown, {QStringLiteral("simplex"), 30}));
+  EXPECT_EQ(unknown.solver.name, shipped.solver.name);
+  EXPECT_EQ(unknown.solver.iterations, shipped.solver.iterations);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 #include "gui/pages/lesson_list_page.h"
 #include "gui/pages/sign_in_page.h"
 
+#include "microsim/assessment/storage/people_store.h"
+
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -23,8 +25,8 @@ struct Page {
   Page() {
     EXPECT_TRUE(history.open(dir.filePath(QStringLiteral("h.sqlite"))).ok());
     history.setPasswordIterations(1000);
-    EXPECT_TRUE(history.addTrainee(QStringLiteral("Existing Trainee")).has_value());
-    EXPECT_TRUE(history.addInstructor(QStringLiteral("Dr Who"), QStringLiteral("correct horse")).has_value());
+    EXPECT_TRUE(assessment::PeopleStore(history).addTrainee(QStringLiteral("Existing Trainee")).has_value());
+    EXPECT_TRUE(assessment::PeopleStore(history).addInstructor(QStringLiteral("Dr Who"), QStringLiteral("correct horse")).has_value());
     page = std::make_unique<SignInPage>(&history);
     page->show();
   }
@@ -62,7 +64,7 @@ TEST(SignIn, CreatingATakenNameSaysSoAndSignsNobodyIn) {
   QTest::mouseClick(p.child<QPushButton>("createTraineeButton"), Qt::LeftButton);
   EXPECT_EQ(signedIn.count(), 0);
   EXPECT_TRUE(p.child<QLabel>("signInMessage")->text().contains(QStringLiteral("already exists")));
-  EXPECT_EQ(p.history.trainees().size(), 2);
+  EXPECT_EQ(assessment::PeopleStore(p.history).trainees().size(), 2);
 }
 
 TEST(SignIn, InstructorNeedsTheRightPassword) {

@@ -2,16 +2,21 @@
 // disabled case below) begins an attempt, says so on stdout and waits; the test kills it
 // and reopens the history. Finished attempts are intact; the child's is Interrupted.
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include "assessment/storage/history_backend.h"
+#include "support/ready_child.h"
 
-#include <QCoreApplication>
 #include <QDeadlineTimer>
 #include <QProcess>
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace microsim::assessment {
@@ -25,7 +30,7 @@ TEST(HistoryCrashChild, DISABLED_BeginAttemptAndWait) {
   if (location.isEmpty()) GTEST_SKIP() << "started by HistoryCrash only";
   HistoryDatabase db;
   ASSERT_TRUE(db.open(location).ok());
-  const auto id = db.beginAttempt(qEnvironmentVariable("MICROSIM_CHILD_TRAINEE").toLongLong(),
+  const auto id = AttemptStore(db).begin(qEnvironmentVariable("MICROSIM_CHILD_TRAINEE").toLongLong(),
                                   QStringLiteral("03_crash"), AttemptMode::Test);
   ASSERT_TRUE(id.has_value());
   std::printf("ready %lld\n", static_cast<long long>(*id));
@@ -34,38 +39,48 @@ TEST(HistoryCrashChild, DISABLED_BeginAttemptAndWait) {
   std::getline(std::cin, line);  // blocks until the parent kills us
 }
 
-class HistoryCrash : public HistoryBackend {};
+class HistoryCrash : public HistoryBackend {
+ protected:
+  // On PostgreSQL the server ends a killed or closed client's backend when it sees the socket
+  // close, a moment later; reopens `db` until the viewer's attempt `index` is no longer in
+  // progress or 20 s have passed (the session test is the backend's absence). SQLite knows
+  // at once.
+  void reopenUntilNotInProgress(HistoryDatabase& db, const Viewer& viewer, qsizetype index) {
+    if (GetParam() != Driver::PostgreSQL) return;
+    QDeadlineTimer deadline(20000);
+    while (AttemptStore(db).list(viewer).value(index).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
+      QSqlQuery wait(db.connection());
+      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
+      db.close();
+      openInto(db);
+    }
+  }
+};
 
 TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   qint64 trainee = 0, done = 0;
   {
     HistoryDatabase db;
     openInto(db);
-    trainee = db.addTrainee(QStringLiteral("Carla")).value_or(0);
-    done = db.beginAttempt(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    trainee = PeopleStore(db).addTrainee(QStringLiteral("Carla")).value_or(0);
+    done = AttemptStore(db).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
     AttemptScore score;
     score.score = 77;
     score.rubricId = "r";
     score.rubricVersion = 1;
     score.metrics.push_back({"time", 61.0, "s", 60, 30, 1, 0.9, ""});
-    ASSERT_TRUE(db.finishAttempt(done, score, QByteArray("rec")));
+    ASSERT_TRUE(ScoreStore(db).finish(done, score, QByteArray("rec")));
   }
 
   QProcess child;
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert(QStringLiteral("MICROSIM_CHILD_DB"), location_);
   env.insert(QStringLiteral("MICROSIM_CHILD_TRAINEE"), QString::number(trainee));
-  child.setProcessEnvironment(env);
-  child.start(QCoreApplication::applicationFilePath(),
-              {QStringLiteral("--gtest_filter=HistoryCrashChild.DISABLED_BeginAttemptAndWait"),
-               QStringLiteral("--gtest_also_run_disabled_tests")});
-  ASSERT_TRUE(child.waitForStarted());
-  QByteArray out;
-  const auto readyLine = [&out] { return out.contains("ready ") && out.indexOf('\n', out.indexOf("ready ")) > 0; };
-  while (!readyLine() && child.waitForReadyRead(30000)) out += child.readAllStandardOutput();
-  const QByteArray ready = out.mid(out.indexOf("ready "));
-  ASSERT_TRUE(ready.startsWith("ready ")) << out.toStdString() << child.readAllStandardError().toStdString();
-  const qint64 begun = ready.mid(6).trimmed().toLongLong();
+  std::string output;
+  const std::optional<qint64> ready = microsim::testing::startReadyChild(
+      child, QStringLiteral("HistoryCrashChild.DISABLED_BeginAttemptAndWait"), env, 30000, &output);
+  ASSERT_TRUE(ready.has_value()) << output;
+  const qint64 begun = *ready;
   child.kill();  // SIGKILL: no destructor, no rollback, no close
   ASSERT_TRUE(child.waitForFinished());
   EXPECT_EQ(child.exitStatus(), QProcess::CrashExit);
@@ -73,18 +88,8 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   HistoryDatabase db;
   openInto(db);
   const Viewer carla{trainee, Role::Trainee};
-  if (GetParam() == Driver::PostgreSQL) {
-    // the server ends the killed client's backend when it sees the socket close, a moment
-    // after the kill; reopen until it has (the session test is the backend's absence)
-    QDeadlineTimer deadline(20000);
-    while (db.attempts(carla).value(1).status == AttemptStatus::InProgress && !deadline.hasExpired()) {
-      QSqlQuery wait(db.connection());
-      wait.exec(QStringLiteral("SELECT pg_sleep(0.05)"));
-      db.close();
-      openInto(db);
-    }
-  }
-  const QList<AttemptSummary> all = db.attempts(carla);
+  reopenUntilNotInProgress(db, carla, 1);
+  const QList<AttemptSummary> all = AttemptStore(db).list(carla);
   ASSERT_EQ(all.size(), 2);
   EXPECT_EQ(all[0].id, done);
   EXPECT_EQ(all[0].status, AttemptStatus::Finished);
@@ -94,30 +99,50 @@ TEST_P(HistoryCrash, KilledAttemptBecomesInterruptedAndFinishedOnesSurvive) {
   EXPECT_EQ(all[1].status, AttemptStatus::Interrupted);
   EXPECT_TRUE(all[1].finished.isValid());
   EXPECT_FALSE(all[1].score.has_value());
-  const auto detail = db.attempt(carla, done);
+  const auto detail = readAttemptDetail(db, carla, done);
   ASSERT_TRUE(detail.has_value());
   EXPECT_EQ(detail->recording, QByteArray("rec"));
   ASSERT_EQ(detail->metrics.size(), 1);
   // an interrupted attempt can no longer be finished
-  EXPECT_FALSE(db.finishAttempt(begun, AttemptScore{}, {}));
-  EXPECT_EQ(db.lastError().error, HistoryError::NotInProgress);
+  ScoreStore scores(db);
+  EXPECT_FALSE(scores.finish(begun, AttemptScore{}, {}));
+  EXPECT_EQ(scores.lastError().error, HistoryError::NotInProgress);
 }
 
 TEST_P(HistoryCrash, LiveSessionsAttemptsAreLeftInProgress) {
   HistoryDatabase first;
   openInto(first);
-  const qint64 trainee = first.addTrainee(QStringLiteral("Dev")).value_or(0);
-  const qint64 running = first.beginAttempt(trainee, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
+  const qint64 trainee = PeopleStore(first).addTrainee(QStringLiteral("Dev")).value_or(0);
+  const qint64 running = AttemptStore(first).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
   ASSERT_TRUE(running);
   // a second program (here: connection) opening the same history must not end it
   HistoryDatabase second;
   openInto(second);
-  const QList<AttemptSummary> seen = second.attempts({trainee, Role::Trainee});
+  const QList<AttemptSummary> seen = AttemptStore(second).list({trainee, Role::Trainee});
   ASSERT_EQ(seen.size(), 1);
   EXPECT_EQ(seen[0].status, AttemptStatus::InProgress);
   AttemptScore score;
   score.score = 50;
-  EXPECT_TRUE(first.finishAttempt(running, score, {}));
+  EXPECT_TRUE(ScoreStore(first).finish(running, score, {}));
+}
+
+TEST_P(HistoryCrash, AClosedConnectionsAttemptIsInterruptedAtTheNextOpenInTheSameProcess) {
+  qint64 trainee = 0, left = 0;
+  {
+    HistoryDatabase session;
+    openInto(session);
+    trainee = PeopleStore(session).addTrainee(QStringLiteral("Eli")).value_or(0);
+    left = AttemptStore(session).begin(trainee, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    ASSERT_TRUE(left);
+  }  // closed without finishing or abandoning, as a destroyed attempt session leaves it
+  HistoryDatabase next;
+  openInto(next);
+  const Viewer eli{trainee, Role::Trainee};
+  reopenUntilNotInProgress(next, eli, 0);
+  const QList<AttemptSummary> all = AttemptStore(next).list(eli);
+  ASSERT_EQ(all.size(), 1);
+  EXPECT_EQ(all[0].id, left);
+  EXPECT_EQ(all[0].status, AttemptStatus::Interrupted);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, HistoryCrash, ::testing::Values(Driver::SQLite, Driver::PostgreSQL),

@@ -1,10 +1,15 @@
 // The SQLite file itself: read-only and corrupt files are refused and left byte-identical,
 // a session-1 file is upgraded in place, backups are consistent and restores are checked.
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/history_database.h"
 #include "microsim/assessment/storage/migrations.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include <QFile>
+#include <QSqlError>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 
@@ -29,13 +34,14 @@ QString makeHistory(const QTemporaryDir& dir, const QString& name, const QString
   QString path = dir.filePath(name);
   HistoryDatabase db;
   EXPECT_TRUE(db.open(path).ok());
-  const qint64 id = db.addTrainee(trainee).value_or(0);
-  const qint64 attempt = db.beginAttempt(id, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+  const qint64 id = PeopleStore(db).addTrainee(trainee).value_or(0);
+  const qint64 attempt = AttemptStore(db).begin(id, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
   AttemptScore score;
   score.score = 64;
   score.rubricId = "r";
   score.rubricVersion = 2;
-  EXPECT_TRUE(db.finishAttempt(attempt, score, QByteArray("recording"))) << db.lastError().driverMessage.toStdString();
+  ScoreStore scores(db);
+  EXPECT_TRUE(scores.finish(attempt, score, QByteArray("recording"))) << scores.lastError().driverMessage.toStdString();
   return path;
 }
 
@@ -67,28 +73,100 @@ TEST(HistoryFiles, CorruptPagesAreRefusedAndLeftByteIdentical) {
   EXPECT_EQ(readAll(path), bytes);
 }
 
-TEST(HistoryFiles, SessionOneFileIsUpgradedInPlace) {
-  QTemporaryDir dir;
-  const QString path = dir.filePath(QStringLiteral("old.sqlite"));
+// an SQLite history at file `path` as an older microsim left it: the first `version`
+// migrations, then `rows` (SQL statements; each must succeed)
+void writeOldHistory(const QString& path, int version, const std::vector<const char*>& rows) {
   {
-    // exactly what session 1 created: migration 1 only
     QSqlDatabase old = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("old"));
     old.setDatabaseName(path);
     ASSERT_TRUE(old.open());
-    ASSERT_EQ(migrate(old, {bundledMigrations().front()}).version, 1);
     QSqlQuery q(old);
-    ASSERT_TRUE(q.exec(QStringLiteral("INSERT INTO trainees (name, created_at) VALUES ('Gus', '2026-11-01T09:00:00Z')")));
+    ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA foreign_keys = ON")));
+    const std::vector<Migration> all = bundledMigrations();
+    ASSERT_EQ(migrate(old, {all.begin(), all.begin() + version}).version, version);
+    for (const char* sql : rows)
+      EXPECT_TRUE(q.exec(QString::fromLatin1(sql))) << sql << ": " << q.lastError().text().toStdString();
+    q.finish();
     old.close();
   }
   QSqlDatabase::removeDatabase(QStringLiteral("old"));
+}
+
+TEST(HistoryFiles, SessionOneFileIsUpgradedInPlace) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("old.sqlite"));
+  // exactly what session 1 created: migration 1 only
+  writeOldHistory(path, 1, {"INSERT INTO trainees (name, created_at) VALUES ('Gus', '2026-11-01T09:00:00Z')"});
   HistoryDatabase db;
   const DatabaseStatus status = db.open(path);
   ASSERT_TRUE(status.ok()) << status.driverMessage.toStdString();
   EXPECT_EQ(status.schemaVersion, bundledMigrations().back().version);
-  const QList<Trainee> people = db.trainees();
+  const QList<Trainee> people = PeopleStore(db).trainees();
   ASSERT_EQ(people.size(), 1);
   EXPECT_EQ(people[0].name.toStdString(), "Gus");
-  EXPECT_TRUE(db.beginAttempt(people[0].id, QStringLiteral("01_bite"), AttemptMode::Learn).has_value());
+  EXPECT_TRUE(AttemptStore(db).begin(people[0].id, QStringLiteral("01_bite"), AttemptMode::Learn).has_value());
+}
+
+TEST(HistoryFiles, SchemaThreeFileKeepsEveryRowAndItsGuardsWhenAbandonedArrives) {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("v3.sqlite"));
+  // a history as schema 3 left it: a finished attempt with its score rows, recording and a
+  // note, an interrupted one and one in progress
+  writeOldHistory(
+      path, 3,
+      {"INSERT INTO trainees (id, name, role, created_at) VALUES (7, 'Lena', 'trainee', 't')",
+       "INSERT INTO trainees (id, name, role, created_at) VALUES (8, 'Ines', 'instructor', 't')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (40, 7, '01_bite', 'test', 'in_progress', 't1', NULL, '')",
+       "INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version) VALUES (40, 81, 1, 'r', 2)",
+       "INSERT INTO score_metrics (attempt_id, position, metric, value, unit, target, tolerance, weight, "
+       "points, feedback) VALUES (40, 0, 'time', 61, 's', 60, 30, 1, 0.9, '')",
+       "INSERT INTO recordings (attempt_id, data) VALUES (40, X'4D5352')",
+       "UPDATE attempts SET status = 'finished', finished_at = 't2' WHERE id = 40",
+       "INSERT INTO annotations (attempt_id, author_id, note, created_at) VALUES (40, 8, 'steady', 't3')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (41, 7, '01_bite', 'learn', 'interrupted', 't4', 't5', 'x')",
+       "INSERT INTO attempts (id, trainee_id, lesson, mode, status, started_at, finished_at, session) "
+       "VALUES (42, 7, '02_needle_entry', 'test', 'in_progress', 't6', NULL, '1@another-host')"});
+
+  HistoryDatabase db;
+  const DatabaseStatus status = db.open(path);
+  ASSERT_TRUE(status.ok()) << status.driverMessage.toStdString();
+  EXPECT_EQ(status.schemaVersion, bundledMigrations().back().version);
+
+  // every row and id is there; the attempt of another machine's session is left in progress
+  AttemptStore attempts(db);
+  const QList<AttemptSummary> lena = attempts.list({7, Role::Trainee});
+  ASSERT_EQ(lena.size(), 3);
+  EXPECT_EQ(lena[0].id, 40);
+  EXPECT_EQ(lena[0].status, AttemptStatus::Finished);
+  EXPECT_DOUBLE_EQ(lena[0].score.value_or(-1), 81.0);
+  EXPECT_EQ(lena[1].status, AttemptStatus::Interrupted);
+  EXPECT_EQ(lena[2].status, AttemptStatus::InProgress);
+  const auto detail = readAttemptDetail(db, {8, Role::Instructor}, 40);
+  ASSERT_TRUE(detail.has_value());
+  ASSERT_EQ(detail->metrics.size(), 1);
+  EXPECT_EQ(detail->recording, QByteArray("MSR"));
+  ASSERT_EQ(detail->annotations.size(), 1);
+  EXPECT_EQ(detail->annotations[0].note.toStdString(), "steady");
+
+  // the new status is accepted, the guards of stored scores are back, foreign keys are on
+  ASSERT_TRUE(attempts.abandon(42)) << attempts.lastError().driverMessage.toStdString();
+  EXPECT_EQ(attempts.summary({7, Role::Trainee}, 42)->status, AttemptStatus::Abandoned);
+  QSqlDatabase c = db.connection();
+  QSqlQuery q(c);
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE attempts SET status = 'in_progress' WHERE id = 40")));
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE scores SET score = 100")));
+  EXPECT_FALSE(q.exec(QStringLiteral("INSERT INTO recordings (attempt_id, data) VALUES (42, X'00')")));
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE attempts SET status = 'lost' WHERE id = 41")));
+  ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA foreign_keys")) && q.next());
+  EXPECT_EQ(q.value(0).toInt(), 1);
+  EXPECT_FALSE(q.exec(QStringLiteral("INSERT INTO annotations (attempt_id, author_id, note, created_at) "
+                                     "VALUES (999, 8, 'orphan', 't')")));
+  ASSERT_TRUE(q.exec(QStringLiteral("DELETE FROM trainees WHERE id = 7")));
+  ASSERT_TRUE(q.exec(QStringLiteral("SELECT (SELECT count(*) FROM attempts) + (SELECT count(*) FROM scores)")) &&
+              q.next());
+  EXPECT_EQ(q.value(0).toInt(), 0) << "deleting the trainee cascades through the rebuilt table";
 }
 
 TEST(HistoryFiles, BackupWhileOpenAndRestoreBringBackTheRows) {
@@ -101,14 +179,14 @@ TEST(HistoryFiles, BackupWhileOpenAndRestoreBringBackTheRows) {
   EXPECT_FALSE(db.backup(copy));  // never overwrites
   EXPECT_EQ(db.lastError().error, HistoryError::FileError);
 
-  ASSERT_TRUE(db.addTrainee(QStringLiteral("After")).has_value());
-  ASSERT_EQ(db.trainees().size(), 2);
+  ASSERT_TRUE(PeopleStore(db).addTrainee(QStringLiteral("After")).has_value());
+  ASSERT_EQ(PeopleStore(db).trainees().size(), 2);
   ASSERT_TRUE(db.restore(copy)) << db.lastError().driverMessage.toStdString();
   ASSERT_TRUE(db.isOpen());
-  const QList<Trainee> people = db.trainees();
+  const QList<Trainee> people = PeopleStore(db).trainees();
   ASSERT_EQ(people.size(), 1);
   EXPECT_EQ(people[0].name.toStdString(), "Hal");
-  const QList<AttemptSummary> attempts = db.attempts({people[0].id, Role::Trainee});
+  const QList<AttemptSummary> attempts = AttemptStore(db).list({people[0].id, Role::Trainee});
   ASSERT_EQ(attempts.size(), 1);
   EXPECT_DOUBLE_EQ(attempts[0].score.value_or(-1), 64.0);
 }
@@ -149,8 +227,8 @@ TEST(HistoryFiles, RestoreRefusesForeignAndNewerFilesAndKeepsTheHistory) {
   EXPECT_EQ(db.lastError().error, HistoryError::BackupTooNew);
 
   ASSERT_TRUE(db.isOpen());
-  ASSERT_EQ(db.trainees().size(), 1);
-  EXPECT_EQ(db.trainees()[0].name.toStdString(), "Ivy");
+  ASSERT_EQ(PeopleStore(db).trainees().size(), 1);
+  EXPECT_EQ(PeopleStore(db).trainees()[0].name.toStdString(), "Ivy");
 }
 
 TEST(HistoryFiles, UnreachableServerOrBadUrlIsCannotOpen) {

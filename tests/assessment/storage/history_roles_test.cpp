@@ -1,6 +1,12 @@
 // Roles, stored scores and hostile input, on SQLite and (when a server is given) PostgreSQL.
 #include "microsim/assessment/scoring/score.h"
+#include "microsim/assessment/storage/annotation_store.h"
+#include "microsim/assessment/storage/attempt_detail.h"
+#include "microsim/assessment/storage/attempt_store.h"
+#include "microsim/assessment/storage/attempts_csv.h"
 #include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include "assessment/storage/history_backend.h"
 
@@ -45,24 +51,28 @@ class HistoryRoles : public HistoryBackend {
     HistoryBackend::SetUp();
     if (IsSkipped() || HasFatalFailure()) return;
     openInto(db_);
-    ana_ = db_.addTrainee(QStringLiteral("Ana"), QStringLiteral("PGY-2")).value_or(0);
-    ben_ = db_.addTrainee(QStringLiteral("Ben")).value_or(0);
-    ines_ = db_.addInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")).value_or(0);
+    ana_ = people_.addTrainee(QStringLiteral("Ana"), QStringLiteral("PGY-2")).value_or(0);
+    ben_ = people_.addTrainee(QStringLiteral("Ben")).value_or(0);
+    ines_ = people_.addInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")).value_or(0);
     ASSERT_TRUE(ana_ && ben_ && ines_);
-    anaAttempt_ = db_.beginAttempt(ana_, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
-    benAttempt_ = db_.beginAttempt(ben_, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
+    anaAttempt_ = attempts_.begin(ana_, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+    benAttempt_ = attempts_.begin(ben_, QStringLiteral("01_bite"), AttemptMode::Learn).value_or(0);
     ASSERT_TRUE(anaAttempt_ && benAttempt_);
-    ASSERT_TRUE(db_.finishAttempt(anaAttempt_, sampleScore(82), QByteArray("MSREC\0\x01\x02", 8)));
-    ASSERT_TRUE(db_.finishAttempt(benAttempt_, sampleScore(41), {}));
+    ASSERT_TRUE(scores_.finish(anaAttempt_, sampleScore(82), QByteArray("MSREC\0\x01\x02", 8)));
+    ASSERT_TRUE(scores_.finish(benAttempt_, sampleScore(41), {}));
   }
 
   HistoryDatabase db_;
+  PeopleStore people_{db_};
+  AttemptStore attempts_{db_};
+  ScoreStore scores_{db_};
+  AnnotationStore notes_{db_};
   qint64 ana_ = 0, ben_ = 0, ines_ = 0, anaAttempt_ = 0, benAttempt_ = 0;
 };
 
 TEST_P(HistoryRoles, TraineeSeesOnlyOwnAttempts) {
   const Viewer ana{ana_, Role::Trainee};
-  const QList<AttemptSummary> own = db_.attempts(ana);
+  const QList<AttemptSummary> own = attempts_.list(ana);
   ASSERT_EQ(own.size(), 1);
   EXPECT_EQ(own[0].id, anaAttempt_);
   EXPECT_EQ(own[0].status, AttemptStatus::Finished);
@@ -74,42 +84,43 @@ TEST_P(HistoryRoles, TraineeSeesOnlyOwnAttempts) {
   EXPECT_EQ(own[0].rubricVersion, 3);
 
   // another trainee's list or attempt is refused, not silently empty
-  EXPECT_TRUE(db_.attempts(ana, ben_).isEmpty());
-  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
-  EXPECT_FALSE(db_.attempt(ana, benAttempt_).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
-  EXPECT_TRUE(db_.attempt(ana, anaAttempt_).has_value());
+  EXPECT_TRUE(attempts_.list(ana, ben_).isEmpty());
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::Forbidden);
+  HistoryStatus status;
+  EXPECT_FALSE(readAttemptDetail(db_, ana, benAttempt_, &status).has_value());
+  EXPECT_EQ(status.error, HistoryError::Forbidden);
+  EXPECT_TRUE(readAttemptDetail(db_, ana, anaAttempt_).has_value());
 }
 
 TEST_P(HistoryRoles, TraineeCannotClaimInstructorRoleNorAnnotate) {
-  EXPECT_TRUE(db_.attempts({ana_, Role::Instructor}).isEmpty());
-  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
-  EXPECT_FALSE(db_.annotate({ana_, Role::Trainee}, anaAttempt_, QStringLiteral("great")).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
-  EXPECT_FALSE(db_.annotate({ana_, Role::Instructor}, anaAttempt_, QStringLiteral("great")).has_value());
-  EXPECT_TRUE(db_.attempts({999999, Role::Instructor}).isEmpty());
-  EXPECT_EQ(db_.lastError().error, HistoryError::Forbidden);
+  EXPECT_TRUE(attempts_.list({ana_, Role::Instructor}).isEmpty());
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(notes_.add({ana_, Role::Trainee}, anaAttempt_, QStringLiteral("great")).has_value());
+  EXPECT_EQ(notes_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(notes_.add({ana_, Role::Instructor}, anaAttempt_, QStringLiteral("great")).has_value());
+  EXPECT_TRUE(attempts_.list({999999, Role::Instructor}).isEmpty());
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::Forbidden);
 }
 
 TEST_P(HistoryRoles, InstructorSeesAllAndAnnotates) {
   const Viewer ines{ines_, Role::Instructor};
-  EXPECT_EQ(db_.attempts(ines).size(), 2);
-  EXPECT_EQ(db_.attempts(ines, ben_).size(), 1);
-  const auto note = db_.annotate(ines, benAttempt_, QStringLiteral("Bites too shallow at 3 o'clock."));
+  EXPECT_EQ(attempts_.list(ines).size(), 2);
+  EXPECT_EQ(attempts_.list(ines, ben_).size(), 1);
+  const auto note = notes_.add(ines, benAttempt_, QStringLiteral("Bites too shallow at 3 o'clock."));
   ASSERT_TRUE(note.has_value());
-  const auto detail = db_.attempt(ines, benAttempt_);
+  const auto detail = readAttemptDetail(db_, ines, benAttempt_);
   ASSERT_TRUE(detail.has_value());
   ASSERT_EQ(detail->annotations.size(), 1);
   EXPECT_EQ(detail->annotations[0].note.toStdString(), "Bites too shallow at 3 o'clock.");
   EXPECT_EQ(detail->annotations[0].authorName.toStdString(), "Ines");
   // the trainee reads the instructor's note on their own attempt
-  const auto seen = db_.attempt({ben_, Role::Trainee}, benAttempt_);
+  const auto seen = readAttemptDetail(db_, {ben_, Role::Trainee}, benAttempt_);
   ASSERT_TRUE(seen.has_value());
   EXPECT_EQ(seen->annotations.size(), 1);
 }
 
 TEST_P(HistoryRoles, FinishStoresScoreMetricsPiercesAndRecordingTogether) {
-  const auto d = db_.attempt({ines_, Role::Instructor}, anaAttempt_);
+  const auto d = readAttemptDetail(db_, {ines_, Role::Instructor}, anaAttempt_);
   ASSERT_TRUE(d.has_value());
   ASSERT_EQ(d->metrics.size(), 2);
   EXPECT_EQ(d->metrics[0].key.toStdString(), "entry_angle");
@@ -136,9 +147,9 @@ TEST_P(HistoryRoles, FinishStoresScoreMetricsPiercesAndRecordingTogether) {
 
 TEST_P(HistoryRoles, StoredScoreCannotChangeThroughApiOrSql) {
   // a second finish is refused and changes nothing
-  EXPECT_FALSE(db_.finishAttempt(anaAttempt_, sampleScore(100), QByteArray("forged")));
-  EXPECT_EQ(db_.lastError().error, HistoryError::NotInProgress);
-  const auto d = db_.attempt({ana_, Role::Trainee}, anaAttempt_);
+  EXPECT_FALSE(scores_.finish(anaAttempt_, sampleScore(100), QByteArray("forged")));
+  EXPECT_EQ(scores_.lastError().error, HistoryError::NotInProgress);
+  const auto d = readAttemptDetail(db_, {ana_, Role::Trainee}, anaAttempt_);
   ASSERT_TRUE(d && d->summary.score);
   EXPECT_DOUBLE_EQ(*d->summary.score, 82.0);
   EXPECT_EQ(d->recording, QByteArray("MSREC\0\x01\x02", 8));
@@ -157,14 +168,60 @@ TEST_P(HistoryRoles, StoredScoreCannotChangeThroughApiOrSql) {
   EXPECT_DOUBLE_EQ(q.value(0).toDouble(), 82.0);
 }
 
+TEST_P(HistoryRoles, AbandonMarksOnlyAnAttemptInProgressAndIsNeverScored) {
+  const qint64 open = attempts_.begin(ana_, QStringLiteral("03_stitch"), AttemptMode::Test).value_or(0);
+  ASSERT_NE(open, 0);
+  ASSERT_TRUE(attempts_.abandon(open)) << attempts_.lastError().driverMessage.toStdString();
+  const auto abandoned = attempts_.summary({ana_, Role::Trainee}, open);
+  ASSERT_TRUE(abandoned.has_value());
+  EXPECT_EQ(abandoned->status, AttemptStatus::Abandoned);
+  EXPECT_TRUE(abandoned->finished.isValid());
+  EXPECT_FALSE(abandoned->score.has_value());
+
+  // neither abandoned twice, nor a finished attempt, nor one that does not exist
+  EXPECT_FALSE(attempts_.abandon(open));
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::NotInProgress);
+  EXPECT_FALSE(attempts_.abandon(anaAttempt_));
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::NotInProgress);
+  EXPECT_FALSE(attempts_.abandon(987654));
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::NotFound);
+
+  // an abandoned attempt takes no score, through the store or raw SQL
+  EXPECT_FALSE(scores_.finish(open, sampleScore(90), {}));
+  EXPECT_EQ(scores_.lastError().error, HistoryError::NotInProgress);
+  QSqlQuery q(db_.connection());
+  q.prepare(QStringLiteral("INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version) "
+                           "VALUES (?, 90, 1, 'r', 1)"));
+  q.addBindValue(open);
+  EXPECT_FALSE(q.exec());
+  EXPECT_EQ(attempts_.summary({ana_, Role::Trainee}, open)->status, AttemptStatus::Abandoned);
+}
+
+TEST_P(HistoryRoles, CsvExportNamesEveryStatus) {
+  const qint64 abandoned = attempts_.begin(ben_, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+  const qint64 open = attempts_.begin(ben_, QStringLiteral("01_bite"), AttemptMode::Test).value_or(0);
+  ASSERT_TRUE(abandoned && open);
+  ASSERT_TRUE(attempts_.abandon(abandoned));
+  QBuffer csv;
+  csv.open(QIODevice::WriteOnly);
+  ASSERT_TRUE(exportAttemptsCsv(db_, {ben_, Role::Trainee}, csv).ok());
+  const QStringList records = QString::fromUtf8(csv.data()).split(QStringLiteral("\r\n"));
+  ASSERT_EQ(records.size(), 5);
+  EXPECT_TRUE(records[1].contains(QStringLiteral(",learn,finished,"))) << records[1].toStdString();
+  EXPECT_TRUE(records[2].startsWith(QStringLiteral("%1,Ben,,01_bite,test,abandoned,").arg(abandoned)))
+      << records[2].toStdString();
+  EXPECT_TRUE(records[3].startsWith(QStringLiteral("%1,Ben,,01_bite,test,in_progress,").arg(open)))
+      << records[3].toStdString();
+}
+
 TEST_P(HistoryRoles, InstructorPasswordIsHashedAndChecked) {
-  EXPECT_EQ(db_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")), ines_);
-  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horsE")).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::WrongPassword);
-  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Ana"), QStringLiteral("correct horse")).has_value());
-  EXPECT_FALSE(db_.verifyInstructor(QStringLiteral("Nobody"), QStringLiteral("correct horse")).has_value());
-  EXPECT_FALSE(db_.addInstructor(QStringLiteral("Short"), QStringLiteral("1234567")).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::InvalidInput);
+  EXPECT_EQ(people_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")), ines_);
+  EXPECT_FALSE(people_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horsE")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::WrongPassword);
+  EXPECT_FALSE(people_.verifyInstructor(QStringLiteral("Ana"), QStringLiteral("correct horse")).has_value());
+  EXPECT_FALSE(people_.verifyInstructor(QStringLiteral("Nobody"), QStringLiteral("correct horse")).has_value());
+  EXPECT_FALSE(people_.addInstructor(QStringLiteral("Short"), QStringLiteral("1234567")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::InvalidInput);
 
   QSqlQuery q(db_.connection());
   ASSERT_TRUE(q.exec(QStringLiteral("SELECT algorithm, iterations, salt, hash FROM instructor_passwords")) && q.next());
@@ -176,51 +233,51 @@ TEST_P(HistoryRoles, InstructorPasswordIsHashedAndChecked) {
 }
 
 TEST_P(HistoryRoles, DuplicateAndEmptyNamesAreRefused) {
-  EXPECT_FALSE(db_.addTrainee(QStringLiteral("Ana")).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::NameTaken);
-  EXPECT_FALSE(db_.addTrainee(QStringLiteral("   ")).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::InvalidInput);
-  EXPECT_FALSE(db_.beginAttempt(424242, QStringLiteral("x"), AttemptMode::Learn).has_value());
-  EXPECT_EQ(db_.lastError().error, HistoryError::NotFound);
+  EXPECT_FALSE(people_.addTrainee(QStringLiteral("Ana")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::NameTaken);
+  EXPECT_FALSE(people_.addTrainee(QStringLiteral("   ")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::InvalidInput);
+  EXPECT_FALSE(attempts_.begin(424242, QStringLiteral("x"), AttemptMode::Learn).has_value());
+  EXPECT_EQ(attempts_.lastError().error, HistoryError::NotFound);
 }
 
 TEST_P(HistoryRoles, SqlInjectionThroughNamesAndNotesIsInert) {
   const QString evil = QStringLiteral("x'); DROP TABLE attempts;--");
   const QString evilGroup = QStringLiteral("g\"; DELETE FROM trainees; --");
   const QString evilNote = QStringLiteral("'; UPDATE scores SET score = 100; --\n\u00e9\u4e2d");
-  const auto id = db_.addTrainee(evil, evilGroup);
+  const auto id = people_.addTrainee(evil, evilGroup);
   ASSERT_TRUE(id.has_value());
-  const auto attemptId = db_.beginAttempt(*id, evil, AttemptMode::Learn);
+  const auto attemptId = attempts_.begin(*id, evil, AttemptMode::Learn);
   ASSERT_TRUE(attemptId.has_value());
-  ASSERT_TRUE(db_.annotate({ines_, Role::Instructor}, *attemptId, evilNote).has_value());
+  ASSERT_TRUE(notes_.add({ines_, Role::Instructor}, *attemptId, evilNote).has_value());
 
-  const auto person = db_.person(*id);
+  const auto person = people_.person(*id);
   ASSERT_TRUE(person.has_value());
   EXPECT_EQ(person->name, evil);
   EXPECT_EQ(person->group, evilGroup);
-  const auto d = db_.attempt({ines_, Role::Instructor}, *attemptId);
+  const auto d = readAttemptDetail(db_, {ines_, Role::Instructor}, *attemptId);
   ASSERT_TRUE(d.has_value());
   EXPECT_EQ(d->summary.lesson, evil);
   ASSERT_EQ(d->annotations.size(), 1);
   EXPECT_EQ(d->annotations[0].note, evilNote);
-  EXPECT_EQ(db_.trainees().size(), 4);
-  EXPECT_EQ(db_.attempts({ines_, Role::Instructor}).size(), 3);
-  const auto ana = db_.attempt({ana_, Role::Trainee}, anaAttempt_);
+  EXPECT_EQ(people_.trainees().size(), 4);
+  EXPECT_EQ(attempts_.list({ines_, Role::Instructor}).size(), 3);
+  const auto ana = readAttemptDetail(db_, {ana_, Role::Trainee}, anaAttempt_);
   ASSERT_TRUE(ana && ana->summary.score);
   EXPECT_DOUBLE_EQ(*ana->summary.score, 82.0);
 }
 
 TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
-  ASSERT_TRUE(db_.addTrainee(QStringLiteral("Doe, \"JD\"\nJohn")).has_value());
-  const auto doe = db_.trainees();
+  ASSERT_TRUE(people_.addTrainee(QStringLiteral("Doe, \"JD\"\nJohn")).has_value());
+  const auto doe = people_.trainees();
   qint64 doeId = 0;
   for (const Trainee& t : doe)
     if (t.name.startsWith(QLatin1String("Doe"))) doeId = t.id;
-  ASSERT_TRUE(db_.beginAttempt(doeId, QStringLiteral("02_stitch"), AttemptMode::Learn).has_value());
+  ASSERT_TRUE(attempts_.begin(doeId, QStringLiteral("02_stitch"), AttemptMode::Learn).has_value());
 
   QBuffer all;
   all.open(QIODevice::WriteOnly);
-  ASSERT_TRUE(db_.exportCsv({ines_, Role::Instructor}, all));
+  ASSERT_TRUE(exportAttemptsCsv(db_, {ines_, Role::Instructor}, all).ok());
   const QString text = QString::fromUtf8(all.data());
   const QStringList records = text.split(QStringLiteral("\r\n"));
   ASSERT_EQ(records.size(), 5);  // header, three attempts, and the empty rest after the last CRLF
@@ -233,7 +290,7 @@ TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
 
   QBuffer own;
   own.open(QIODevice::WriteOnly);
-  ASSERT_TRUE(db_.exportCsv({ben_, Role::Trainee}, own));
+  ASSERT_TRUE(exportAttemptsCsv(db_, {ben_, Role::Trainee}, own).ok());
   EXPECT_EQ(QString::fromUtf8(own.data()).count(QStringLiteral("\r\n")), 2);
   EXPECT_FALSE(own.data().contains("Ana"));
 }

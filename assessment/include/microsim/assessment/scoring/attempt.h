@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -61,6 +62,8 @@ struct Attempt {
   double duration = 0.0;                    ///< s, steps × dt
   int steps = 0;
   double maxStretch = 0.0;                  ///< max over steps and live links of (l − r)/r
+  /// mm, the curved needle's arc radius; NaN without a needle or with a straight one
+  double needleRadius = std::numeric_limits<double>::quiet_NaN();
   bool truncated = false;                   ///< the recording had no end record: partial
   std::string sceneFile;                    ///< as loaded, empty when built in memory
 };
@@ -113,6 +116,10 @@ std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
 /// The same on a recording already in memory.
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const sim::Recording& recording,
+                                                 bool truncated);
+/// The same on a scene definition already loaded (and perhaps changed in memory, as the
+/// app's solver settings change it): the recording replays on exactly that scene.
+std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& scene, const sim::Recording& recording,
                                                  bool truncated);
 
 }  // namespace microsim::assessment

@@ -1,6 +1,8 @@
 #pragma once
 // The attempt's metrics by key: what a rubric can weigh. Every metric is one number; a
-// metric the attempt cannot have (an entry angle without a pierce) is NaN.
+// metric the attempt cannot have (an entry angle without a pierce) is NaN. A metric that
+// does not apply to how the attempt was made is NaN and not applicable: smoothness and
+// idle time of stepped input (keyboard; motion_metrics.h), which score.h weights out.
 //
 //   key                  unit   meaning
 //   time                 s      duration of the attempt
@@ -16,6 +18,8 @@
 //   max_stretch          1      largest link strain (l − r)/r of the tissue
 //   tissue_damage        count  TissueOverStretch and TissueTear events
 //   passages             count  wall passages (pierce_metrics.h)
+//   arc_deviation        mm     largest distance of the needle tip from its own arc between
+//                               pierces of one hold (arc_metrics.h)
 //   entry_angle          deg    mean entry angle to the wall normal
 //   exit_angle           deg    mean exit angle (passages with an exit)
 //   bite                 mm     mean bite from the cut edge
@@ -27,6 +31,7 @@
 //   spacing              deg    mean angle between consecutive stitches
 //   triangulation_error  deg    largest |arc − 120°| of the first three stitches
 
+#include "microsim/assessment/scoring/arc_metrics.h"
 #include "microsim/assessment/scoring/attempt.h"
 #include "microsim/assessment/scoring/motion_metrics.h"
 #include "microsim/assessment/scoring/pierce_metrics.h"
@@ -55,6 +60,7 @@ struct MetricValue {
   std::string key;
   double value = 0.0;  ///< NaN when the attempt cannot have it
   std::string unit;
+  bool applicable = true;  ///< false: the metric does not apply to this attempt's input
 };
 
 struct AttemptMetrics {

@@ -13,6 +13,15 @@
 //                 T the movement's duration, v_peak its peak speed; the jerk is the third
 //                 finite difference of positions. Higher (closer to 0) is smoother; a
 //                 minimum-jerk reach scores −ln(720 / 1.875²) = −5.32.
+//   stepped input the tips move in steps rather than continuously: at least half of the
+//                 samples in which a tracked tip moved are followed by one in which it stood
+//                 exactly still. Key presses and key repeat (tracking/manual_source.h: one
+//                 0.05 mm jump per press, nothing in between) and a source slower than the
+//                 step rate that holds its last pose look like this; a tracked hand is never
+//                 exactly still in the middle of a movement. Finite differences of such
+//                 motion measure the steps, not the hand: its jerk is that of the jumps and
+//                 every step between two jumps is "idle", so smoothness and idle time do not
+//                 apply to it (metrics.h marks them not applicable).
 //
 // Units: millimetres, seconds.
 
@@ -64,6 +73,10 @@ HandMotion handMotion(const std::vector<MotionSample>& samples, double dt,
 
 /// Time (s) in which both hands are below idleSpeed.
 double idleTime(const Attempt& attempt, const MotionParams& params);
+
+/// True when the attempt's tips moved in steps (see "stepped input" above); false when they
+/// never moved.
+bool steppedInput(const Attempt& attempt);
 
 /// Grabs (GripSuture, GrabTissue) by a hand after that hand's release.
 int regrasps(const std::vector<sim::SceneEvent>& events);

@@ -22,7 +22,9 @@
 //
 // Points of a metric (0..1): d = how far the value is past the target on the bad side
 // (|v − t| for "both"); 1 when d ≤ tolerance, 0 when d ≥ limit, linear between. A NaN
-// value (the attempt lacks it) scores 0 with feedback "<key>.missing". Default feedback
+// value (the attempt lacks it) scores 0 with feedback "<key>.missing"; a metric that does not
+// apply to the attempt's input (MetricValue::applicable) is weighted out instead (score.h,
+// feedback "<key>.not_applicable"). Default feedback
 // keys are "<key>.too_high" and "<key>.too_low". A never-event fires when its metric's
 // value exceeds "above"; it caps the score at "cap" (0 zeroes it).
 //

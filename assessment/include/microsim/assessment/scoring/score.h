@@ -2,6 +2,9 @@
 // Scoring: a rubric (rubric.h) applied to an attempt's metrics (metrics.h).
 //
 //   score = 100 · Σ weight·points / Σ weight, then capped by every never-event that fired;
+//   a metric that does not apply to the attempt (MetricValue::applicable false) is left out
+//   of both sums, so its weight is spread over the others in proportion; its MetricScore
+//   has weight 0 and feedback "<key>.not_applicable".
 //   passed = score ≥ pass_mark.
 // Proficiency is the pass mark on two consecutive Test attempts.
 
@@ -25,6 +28,7 @@ struct MetricScore {
   double weight = 0.0;
   double points = 0.0;     ///< 0..1
   std::string feedback;    ///< empty when full points, else a key like "entry_angle.too_oblique"
+  bool applicable = true;  ///< false: weighted out (weight 0), feedback "<key>.not_applicable"
 };
 
 struct AttemptScore {

@@ -4,17 +4,34 @@
 // a URL `postgresql://user[:password]@host[:port]/database`. The same numbered migrations
 // build the same schema on both (see migrations.h).
 //
-// Roles are enforced here, not in the GUI: every read of attempts takes a Viewer, whose
-// role is checked against the stored person. A trainee sees only their own attempts; an
-// instructor (signed in with a salted PBKDF2 password, see password_hash.h) sees all and
-// may annotate. A score is written once, by finishAttempt, in the same transaction as
-// its metrics, pierce values and recording; there is no update path, finishAttempt
-// refuses an attempt that is not in progress, and SQL triggers refuse UPDATEs of stored
-// scores on both drivers.
+// This class is the connection: it opens (migrating and sweeping up ended sessions'
+// attempts), closes, backs up and restores. The tables are read and written by one store
+// each, over an open HistoryDatabase (fooyin's per-table repositories):
+//   PeopleStore       trainees, instructors and their password hashes, groups (people_store.h)
+//   AttemptStore      attempts: begun, abandoned, listed (attempt_store.h)
+//   ScoreStore        a finished attempt's score, metrics, pierce values, recording (score_store.h)
+//   AnnotationStore   instructors' notes on attempts (annotation_store.h)
+//   SetupProfileStore calibration profiles (setup_profiles.h)
+// and readAttemptDetail (attempt_detail.h) and exportAttemptsCsv (attempts_csv.h) read
+// through several of them.
 //
-// An attempt records the session that began it (SQLite: pid@host; PostgreSQL: the
-// server's backend pid). At open, attempts still in progress whose session is gone
-// (a crash, SIGKILL) become Interrupted; attempts of live sessions are left alone.
+// Roles are enforced in the stores, not in the GUI: every read of attempts takes a Viewer,
+// whose role is checked against the stored person. A trainee sees only their own attempts;
+// an instructor (signed in with a salted PBKDF2 password, see password_hash.h) sees all and
+// may annotate. A score is written once, by ScoreStore::finish, in the same transaction as
+// its metrics, pierce values and recording; there is no update path, and SQL triggers
+// refuse UPDATEs of stored scores on both drivers.
+//
+// Sessions. An attempt records the session (connection) that began it: on SQLite
+// pid@host#n, n this process's connection counter; on PostgreSQL the server's backend pid.
+// At open, attempts still in progress whose session has ended (its process gone — a crash,
+// SIGKILL —, or in this very process its connection closed; on PostgreSQL its backend gone)
+// become Interrupted; attempts of live sessions are left alone.
+//
+// Threads. A QtSql connection belongs to the thread that opened it: open, use and close a
+// HistoryDatabase (and its stores) on one thread. The app's attempts do theirs on a worker
+// thread with a connection of its own (app/gui/session). setAccessObserver lets a test see
+// the thread of every access.
 //
 // Errors come back as enums plus the driver's text as data; the app decides what to tell
 // the user. A database that cannot be opened is never changed.
@@ -22,15 +39,12 @@
 #include "microsim/assessment/storage/history_types.h"
 #include "microsim/assessment/storage/migrations.h"
 
-#include <QIODevice>
 #include <QSqlDatabase>
 #include <QString>
 
-#include <optional>
+#include <functional>
 
 namespace microsim::assessment {
-
-struct AttemptScore;  // scoring/score.h
 
 enum class DatabaseError {
   None,
@@ -50,15 +64,15 @@ struct DatabaseStatus {
   bool ok() const { return error == DatabaseError::None; }
 };
 
-/// Why an operation on an open database failed (HistoryDatabase::lastError()).
+/// Why an operation on an open database failed (lastError() of the database or a store).
 enum class HistoryError {
   None,
   NotOpen,
   Forbidden,        ///< the viewer's role does not allow it, or the viewer is unknown
   NotFound,         ///< no such person or attempt
-  NotInProgress,    ///< finishAttempt on an attempt that is finished or interrupted
+  NotInProgress,    ///< finishing or abandoning an attempt that is no longer in progress
   NameTaken,        ///< a person with that name exists
-  InvalidInput,     ///< an empty name, a password shorter than kMinPasswordLength, ...
+  InvalidInput,     ///< an empty name, a password shorter than PeopleStore::kMinPasswordLength, ...
   WrongPassword,    ///< verifyInstructor: unknown name or wrong password (not told apart)
   Unsupported,      ///< backup/restore on PostgreSQL (use pg_dump there)
   NotABackup,       ///< restore: the file is not a microsim history database
@@ -75,7 +89,6 @@ struct HistoryStatus {
 
 class HistoryDatabase {
  public:
-  static constexpr int kMinPasswordLength = 8;
   /// PBKDF2-HMAC-SHA256 iterations for new instructor passwords (OWASP 2023).
   static constexpr int kDefaultPasswordIterations = 600000;
 
@@ -90,7 +103,8 @@ class HistoryDatabase {
   static bool isUrl(const QString& location);
 
   /// Opens (creating if needed) the SQLite file at `location`, or connects to the
-  /// PostgreSQL URL, applies pending migrations and marks orphaned attempts Interrupted.
+  /// PostgreSQL URL, applies pending migrations and marks the attempts of ended sessions
+  /// Interrupted.
   DatabaseStatus open(const QString& location);
   void close();
 
@@ -98,39 +112,23 @@ class HistoryDatabase {
   Driver driver() const { return driver_; }
   /// The file path (SQLite) or the URL without its password (PostgreSQL).
   QString path() const { return path_; }
+  /// What open() was given (a URL keeps its password): another connection to the same
+  /// history, e.g. on another thread, opens this.
+  QString location() const { return location_; }
   int schemaVersion();
-  /// The connection, for repositories in this library.
+  /// The connection, for the stores of this library.
   QSqlDatabase connection() const;
-  /// The outcome of the last operation below.
+  /// This connection's session tag, stored with the attempts it begins.
+  QString session() const { return session_; }
+  /// True when the attempts of `session` can no longer be finished: its process or
+  /// server backend is gone, or it was a connection of this process that is closed now.
+  bool sessionEnded(const QString& session);
+  /// The outcome of the last backup() or restore().
   HistoryStatus lastError() const { return last_; }
   /// Iterations for passwords set from now on (tests lower it; stored with each hash).
   void setPasswordIterations(int iterations) { passwordIterations_ = iterations; }
+  int passwordIterations() const { return passwordIterations_; }
 
-  // ---- people -------------------------------------------------------------------------
-  /// Everyone, trainees and instructors, by name.
-  QList<Trainee> trainees();
-  std::optional<Trainee> person(qint64 id);
-  /// A trainee; `group` is created when new. nullopt: NameTaken, InvalidInput, ...
-  std::optional<qint64> addTrainee(const QString& name, const QString& group = {});
-  /// An instructor with a salted PBKDF2-HMAC-SHA256 hash of `password`.
-  std::optional<qint64> addInstructor(const QString& name, const QString& password);
-  /// The instructor's id when the password matches (constant-time compare).
-  std::optional<qint64> verifyInstructor(const QString& name, const QString& password);
-  QStringList groups();
-
-  // ---- attempts -----------------------------------------------------------------------
-  std::optional<qint64> beginAttempt(qint64 traineeId, const QString& lesson, AttemptMode mode);
-  /// Stores score, metrics, pierce values and recording in one transaction and marks the
-  /// attempt Finished. Refused (NotInProgress) when the attempt is not in progress.
-  bool finishAttempt(qint64 attemptId, const AttemptScore& score, const QByteArray& recording);
-  /// Oldest first. A trainee gets only their own (asking for another's gives Forbidden
-  /// and an empty list); an instructor gets everyone's, or `traineeId`'s.
-  QList<AttemptSummary> attempts(const Viewer& viewer, std::optional<qint64> traineeId = {});
-  std::optional<AttemptDetail> attempt(const Viewer& viewer, qint64 attemptId);
-  /// Instructors only. Returns the annotation's id.
-  std::optional<qint64> annotate(const Viewer& viewer, qint64 attemptId, const QString& note);
-
-  // ---- files --------------------------------------------------------------------------
   /// A consistent copy of the open SQLite database (VACUUM INTO), safe while in use.
   /// Written as `toFile`.part and renamed when complete; refused (FileError) when
   /// `toFile` exists.
@@ -138,21 +136,24 @@ class HistoryDatabase {
   /// Replaces the open SQLite database by `fromFile` after checking that it is a microsim
   /// history no newer than this program; then reopens and migrates it.
   bool restore(const QString& fromFile);
-  /// Every attempt the viewer may see, one CSV row each (RFC 4180), with a header row.
-  bool exportCsv(const Viewer& viewer, QIODevice& out);
+
+  /// Called on the calling thread each time a store reaches the driver (connection(),
+  /// isOpen()); tests assert with it which threads touch the history. Empty: none.
+  /// Process-wide; set it while no history is in use on another thread.
+  using AccessObserver = std::function<void(const HistoryDatabase&)>;
+  static void setAccessObserver(AccessObserver observer);
 
  private:
   bool fail(HistoryError error, const QString& driverMessage = {});
   bool succeed();
-  std::optional<Role> storedRole(qint64 personId);
-  bool mayView(const Viewer& viewer, std::optional<qint64> traineeId);
-  void interruptOrphanedAttempts();
   DatabaseStatus openSqlite(const QString& path);
   DatabaseStatus openPostgres(const QString& url);
   DatabaseStatus finishOpen(QSqlDatabase& db);
+  void notifyAccess() const;
 
   QString connectionName_;
   QString path_;
+  QString location_;
   Driver driver_ = Driver::SQLite;
   QString session_;  ///< tag of this connection's session, stored with begun attempts
   HistoryStatus last_;

@@ -1,6 +1,6 @@
 #pragma once
 // The rows the history hands out: people, attempts, stored scores and annotations.
-// Plain values; HistoryDatabase reads and writes them. Times are UTC.
+// Plain values; the stores (history_database.h) read and write them. Times are UTC.
 
 #include <QByteArray>
 #include <QDateTime>
@@ -17,7 +17,8 @@ enum class AttemptMode { Learn, Test };
 enum class AttemptStatus {
   InProgress,   ///< begun, not yet scored
   Finished,     ///< scored; its score, metrics and recording can no longer change
-  Interrupted,  ///< the program that began it ended without finishing it (crash, kill)
+  Interrupted,  ///< the session that began it ended without finishing it (crash, kill)
+  Abandoned,    ///< the trainee gave it up (confirmed); never scored
 };
 
 /// Who is asking. A trainee sees only their own attempts; an instructor sees every

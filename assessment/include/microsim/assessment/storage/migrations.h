@@ -12,6 +12,11 @@
 // (for what the dialects spell differently, such as triggers). Timestamps are ISO-8601
 // TEXT in UTC. A statement may hold ';' inside a line (a trigger body written on one
 // line); only a ';' that ends a line ends a statement.
+//
+// On SQLite the migrations run with foreign key enforcement off (a table rebuild, SQLite's
+// way to change a constraint, would otherwise cascade the old table's drop into its
+// children), and each is committed only when PRAGMA foreign_key_check finds no row that
+// breaks a foreign key; the setting is put back afterwards.
 
 #include <QSqlDatabase>
 #include <QString>

@@ -1,5 +1,5 @@
-// HistoryDatabase: trainees, instructors (with their password hashes) and groups.
-#include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/people_store.h"
+
 #include "microsim/assessment/storage/password_hash.h"
 
 #include "storage/sql_util.h"
@@ -26,13 +26,10 @@ Trainee readPerson(const QSqlQuery& q) {
 
 }  // namespace
 
-QList<Trainee> HistoryDatabase::trainees() {
+QList<Trainee> PeopleStore::trainees() {
   QList<Trainee> out;
-  if (!isOpen()) {
-    fail(HistoryError::NotOpen);
-    return out;
-  }
-  QSqlQuery q(connection());
+  if (!requireOpen()) return out;
+  QSqlQuery q(db_.connection());
   if (!q.exec(QString::fromLatin1(kPersonColumns) + QStringLiteral("ORDER BY t.name, t.id"))) {
     fail(HistoryError::QueryFailed, q.lastError().text());
     return out;
@@ -42,9 +39,9 @@ QList<Trainee> HistoryDatabase::trainees() {
   return out;
 }
 
-std::optional<Trainee> HistoryDatabase::person(qint64 id) {
-  if (!isOpen()) return fail(HistoryError::NotOpen), std::nullopt;
-  QSqlQuery q(connection());
+std::optional<Trainee> PeopleStore::person(qint64 id) {
+  if (!requireOpen()) return std::nullopt;
+  QSqlQuery q(db_.connection());
   q.prepare(QString::fromLatin1(kPersonColumns) + QStringLiteral("WHERE t.id = ?"));
   q.addBindValue(id);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
@@ -53,10 +50,10 @@ std::optional<Trainee> HistoryDatabase::person(qint64 id) {
   return readPerson(q);
 }
 
-QStringList HistoryDatabase::groups() {
+QStringList PeopleStore::groups() {
   QStringList out;
-  if (!isOpen()) return fail(HistoryError::NotOpen), out;
-  QSqlQuery q(connection());
+  if (!requireOpen()) return out;
+  QSqlQuery q(db_.connection());
   if (!q.exec(QStringLiteral("SELECT name FROM trainee_groups ORDER BY name")))
     return fail(HistoryError::QueryFailed, q.lastError().text()), out;
   while (q.next()) out << q.value(0).toString();
@@ -106,10 +103,10 @@ std::optional<qint64> insertPerson(const QSqlDatabase& db, const QString& name, 
 
 }  // namespace
 
-std::optional<qint64> HistoryDatabase::addTrainee(const QString& name, const QString& group) {
-  if (!isOpen()) return fail(HistoryError::NotOpen), std::nullopt;
+std::optional<qint64> PeopleStore::addTrainee(const QString& name, const QString& group) {
+  if (!requireOpen()) return std::nullopt;
   if (name.trimmed().isEmpty()) return fail(HistoryError::InvalidInput), std::nullopt;
-  QSqlDatabase db = connection();
+  QSqlDatabase db = db_.connection();
   const std::optional<qint64> existing = idByName(db, name);
   if (!existing) return fail(HistoryError::QueryFailed, db.lastError().text()), std::nullopt;
   if (*existing != 0) return fail(HistoryError::NameTaken), std::nullopt;
@@ -125,17 +122,17 @@ std::optional<qint64> HistoryDatabase::addTrainee(const QString& name, const QSt
   return id;
 }
 
-std::optional<qint64> HistoryDatabase::addInstructor(const QString& name, const QString& password) {
-  if (!isOpen()) return fail(HistoryError::NotOpen), std::nullopt;
+std::optional<qint64> PeopleStore::addInstructor(const QString& name, const QString& password) {
+  if (!requireOpen()) return std::nullopt;
   if (name.trimmed().isEmpty() || password.size() < kMinPasswordLength)
     return fail(HistoryError::InvalidInput), std::nullopt;
-  QSqlDatabase db = connection();
+  QSqlDatabase db = db_.connection();
   const std::optional<qint64> existing = idByName(db, name);
   if (!existing) return fail(HistoryError::QueryFailed, db.lastError().text()), std::nullopt;
   if (*existing != 0) return fail(HistoryError::NameTaken), std::nullopt;
 
   // the slow hash first, outside the transaction
-  const PasswordHash hash = hashPassword(password, passwordIterations_);
+  const PasswordHash hash = hashPassword(password, db_.passwordIterations());
   QString error;
   if (!db.transaction()) return fail(HistoryError::QueryFailed, db.lastError().text()), std::nullopt;
   std::optional<qint64> id = insertPerson(db, name, Role::Instructor, {}, &error);
@@ -163,9 +160,9 @@ std::optional<qint64> HistoryDatabase::addInstructor(const QString& name, const 
   return id;
 }
 
-std::optional<qint64> HistoryDatabase::verifyInstructor(const QString& name, const QString& password) {
-  if (!isOpen()) return fail(HistoryError::NotOpen), std::nullopt;
-  QSqlQuery q(connection());
+std::optional<qint64> PeopleStore::verifyInstructor(const QString& name, const QString& password) {
+  if (!requireOpen()) return std::nullopt;
+  QSqlQuery q(db_.connection());
   q.prepare(QStringLiteral(
       "SELECT t.id, p.algorithm, p.iterations, p.salt, p.hash FROM trainees t "
       "JOIN instructor_passwords p ON p.trainee_id = t.id WHERE t.name = ? AND t.role = 'instructor'"));
@@ -173,7 +170,7 @@ std::optional<qint64> HistoryDatabase::verifyInstructor(const QString& name, con
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
   if (!q.next()) {
     // an unknown name costs as much as a wrong password
-    pbkdf2HmacSha256(password.toUtf8(), QByteArray(16, '\0'), passwordIterations_, 32);
+    pbkdf2HmacSha256(password.toUtf8(), QByteArray(16, '\0'), db_.passwordIterations(), 32);
     return fail(HistoryError::WrongPassword), std::nullopt;
   }
   PasswordHash stored;

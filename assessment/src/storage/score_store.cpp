@@ -1,8 +1,9 @@
-// HistoryDatabase: attempts, their stored scores, and instructors' annotations.
-#include "microsim/assessment/storage/history_database.h"
+#include "microsim/assessment/storage/score_store.h"
+
 #include "microsim/assessment/scoring/score.h"
 
 #include "storage/sql_util.h"
+#include "storage/viewer_access.h"
 
 #include <QSqlError>
 #include <QSqlQuery>
@@ -13,27 +14,6 @@
 namespace microsim::assessment {
 
 namespace {
-
-constexpr const char* kSummaryColumns =
-    "SELECT a.id, a.trainee_id, a.lesson, a.mode, a.status, a.started_at, a.finished_at, "
-    "s.score, s.passed, s.rubric_id, s.rubric_version FROM attempts a "
-    "LEFT JOIN scores s ON s.attempt_id = a.id ";
-
-AttemptSummary readSummary(const QSqlQuery& q) {
-  AttemptSummary a;
-  a.id = q.value(0).toLongLong();
-  a.traineeId = q.value(1).toLongLong();
-  a.lesson = q.value(2).toString();
-  a.mode = sql::modeFromText(q.value(3).toString());
-  a.status = sql::statusFromText(q.value(4).toString());
-  a.started = sql::time(q.value(5));
-  a.finished = sql::time(q.value(6));
-  if (!q.value(7).isNull()) a.score = q.value(7).toDouble();
-  a.passed = q.value(8).toInt() == 1;
-  a.rubricId = q.value(9).toString();
-  a.rubricVersion = q.value(10).toInt();
-  return a;
-}
 
 // one pierce as (key, value) rows; NaN values are stored as NULL
 std::vector<std::pair<const char*, double>> pierceValues(const PierceMetrics& p) {
@@ -112,28 +92,9 @@ QString insertScore(const QSqlDatabase& db, qint64 attemptId, const AttemptScore
 
 }  // namespace
 
-std::optional<qint64> HistoryDatabase::beginAttempt(qint64 traineeId, const QString& lesson,
-                                                    AttemptMode mode) {
-  if (!isOpen()) return fail(HistoryError::NotOpen), std::nullopt;
-  if (!storedRole(traineeId)) return fail(HistoryError::NotFound), std::nullopt;
-  QSqlQuery q(connection());
-  q.prepare(QStringLiteral(
-      "INSERT INTO attempts (trainee_id, lesson, mode, status, started_at, session) "
-      "VALUES (?, ?, ?, 'in_progress', ?, ?) RETURNING id"));
-  q.addBindValue(traineeId);
-  q.addBindValue(sql::text(lesson));
-  q.addBindValue(sql::modeText(mode));
-  q.addBindValue(sql::now());
-  q.addBindValue(session_);
-  if (!q.exec() || !q.next()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  succeed();
-  return q.value(0).toLongLong();
-}
-
-bool HistoryDatabase::finishAttempt(qint64 attemptId, const AttemptScore& score,
-                                    const QByteArray& recording) {
-  if (!isOpen()) return fail(HistoryError::NotOpen);
-  QSqlDatabase db = connection();
+bool ScoreStore::finish(qint64 attemptId, const AttemptScore& score, const QByteArray& recording) {
+  if (!requireOpen()) return false;
+  QSqlDatabase db = db_.connection();
   if (!db.transaction()) return fail(HistoryError::QueryFailed, db.lastError().text());
   const auto abort = [&](HistoryError error, const QString& message = {}) {
     db.rollback();
@@ -163,92 +124,42 @@ bool HistoryDatabase::finishAttempt(qint64 attemptId, const AttemptScore& score,
   return succeed();
 }
 
-QList<AttemptSummary> HistoryDatabase::attempts(const Viewer& viewer, std::optional<qint64> traineeId) {
-  QList<AttemptSummary> out;
-  if (!mayView(viewer, traineeId)) return out;
-  if (viewer.role == Role::Trainee) traineeId = viewer.userId;
-  QSqlQuery q(connection());
-  q.prepare(QString::fromLatin1(kSummaryColumns) +
-            (traineeId ? QStringLiteral("WHERE a.trainee_id = ? ") : QString()) +
-            QStringLiteral("ORDER BY a.started_at, a.id"));
-  if (traineeId) q.addBindValue(*traineeId);
-  if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), out;
-  while (q.next()) out << readSummary(q);
-  succeed();
-  return out;
-}
+std::optional<StoredScore> ScoreStore::load(const Viewer& viewer, qint64 attemptId) {
+  if (!requireOpen()) return std::nullopt;
+  const QSqlDatabase db = db_.connection();
+  if (const HistoryStatus s = access::mayViewAttempt(db, viewer, attemptId); !s.ok())
+    return fail(s.error, s.driverMessage), std::nullopt;
 
-std::optional<AttemptDetail> HistoryDatabase::attempt(const Viewer& viewer, qint64 attemptId) {
-  if (!mayView(viewer, std::nullopt)) return std::nullopt;
-  QSqlDatabase db = connection();
+  StoredScore out;
   QSqlQuery q(db);
-  q.prepare(QString::fromLatin1(kSummaryColumns) + QStringLiteral("WHERE a.id = ?"));
-  q.addBindValue(attemptId);
-  if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  if (!q.next()) return fail(HistoryError::NotFound), std::nullopt;
-  AttemptDetail d;
-  d.summary = readSummary(q);
-  if (viewer.role == Role::Trainee && d.summary.traineeId != viewer.userId)
-    return fail(HistoryError::Forbidden), std::nullopt;
-
   q.prepare(QStringLiteral(
       "SELECT metric, value, unit, target, tolerance, weight, points, feedback FROM score_metrics "
       "WHERE attempt_id = ? ORDER BY position"));
   q.addBindValue(attemptId);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
   while (q.next())
-    d.metrics << StoredMetric{q.value(0).toString(),   sql::realOrNan(q.value(1)), q.value(2).toString(),
-                              q.value(3).toDouble(),   q.value(4).toDouble(),      q.value(5).toDouble(),
-                              q.value(6).toDouble(),   q.value(7).toString()};
+    out.metrics << StoredMetric{q.value(0).toString(),   sql::realOrNan(q.value(1)), q.value(2).toString(),
+                                q.value(3).toDouble(),   q.value(4).toDouble(),      q.value(5).toDouble(),
+                                q.value(6).toDouble(),   q.value(7).toString()};
 
   q.prepare(QStringLiteral(
       "SELECT pierce, metric, value FROM score_pierces WHERE attempt_id = ? ORDER BY pierce, metric"));
   q.addBindValue(attemptId);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
   while (q.next())
-    d.pierces << StoredPierceValue{q.value(0).toInt(), q.value(1).toString(), sql::realOrNan(q.value(2))};
+    out.pierces << StoredPierceValue{q.value(0).toInt(), q.value(1).toString(), sql::realOrNan(q.value(2))};
 
   q.prepare(QStringLiteral("SELECT never_events FROM scores WHERE attempt_id = ?"));
   q.addBindValue(attemptId);
-  if (q.exec() && q.next())
-    d.neverEvents = q.value(0).toString().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-
-  q.prepare(QStringLiteral(
-      "SELECT n.id, n.author_id, t.name, n.note, n.created_at FROM annotations n "
-      "JOIN trainees t ON t.id = n.author_id WHERE n.attempt_id = ? ORDER BY n.created_at, n.id"));
-  q.addBindValue(attemptId);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  while (q.next())
-    d.annotations << Annotation{q.value(0).toLongLong(), attemptId, q.value(1).toLongLong(),
-                                q.value(2).toString(), q.value(3).toString(), sql::time(q.value(4))};
+  if (q.next()) out.neverEvents = q.value(0).toString().split(QLatin1Char(' '), Qt::SkipEmptyParts);
 
   q.prepare(QStringLiteral("SELECT data FROM recordings WHERE attempt_id = ?"));
   q.addBindValue(attemptId);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  if (q.next()) d.recording = q.value(0).toByteArray();
+  if (q.next()) out.recording = q.value(0).toByteArray();
   succeed();
-  return d;
-}
-
-std::optional<qint64> HistoryDatabase::annotate(const Viewer& viewer, qint64 attemptId,
-                                                const QString& note) {
-  if (!mayView(viewer, std::nullopt)) return std::nullopt;
-  if (viewer.role != Role::Instructor) return fail(HistoryError::Forbidden), std::nullopt;
-  if (note.trimmed().isEmpty()) return fail(HistoryError::InvalidInput), std::nullopt;
-  QSqlQuery q(connection());
-  q.prepare(QStringLiteral("SELECT id FROM attempts WHERE id = ?"));
-  q.addBindValue(attemptId);
-  if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  if (!q.next()) return fail(HistoryError::NotFound), std::nullopt;
-  q.prepare(QStringLiteral(
-      "INSERT INTO annotations (attempt_id, author_id, note, created_at) VALUES (?, ?, ?, ?) RETURNING id"));
-  q.addBindValue(attemptId);
-  q.addBindValue(viewer.userId);
-  q.addBindValue(note);
-  q.addBindValue(sql::now());
-  if (!q.exec() || !q.next()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
-  succeed();
-  return q.value(0).toLongLong();
+  return out;
 }
 
 }  // namespace microsim::assessment
