@@ -1018,6 +1018,10 @@
         <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
         <translation>--scene DATEI angeben, oder --input AUFZ, um sie auf der Szene wiederzugeben, mit der sie aufgezeichnet wurde</translation>
     </message>
+    <message>
+        <source>forceps closes on nothing: nothing lies between its jaws</source>
+        <translation>Pinzette schließt ins Leere: zwischen ihren Branchen liegt nichts</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1260,6 +1264,14 @@
     <message>
         <source>The history could not mark the attempt abandoned (%1).</source>
         <translation>Der Verlauf konnte den Versuch nicht als aufgegeben markieren (%1).</translation>
+    </message>
+    <message>
+        <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>Die linke Pinzette hat ins Leere gegriffen: zwischen ihren Branchen lag nichts.</translation>
+    </message>
+    <message>
+        <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>Die rechte Pinzette hat ins Leere gegriffen: zwischen ihren Branchen lag nichts.</translation>
     </message>
 </context>
 <context>

@@ -1018,6 +1018,10 @@
         <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>
         <translation>indique --scene ARCHIVO, o --input GRAB para reproducirla en la escena con la que se grabó</translation>
     </message>
+    <message>
+        <source>forceps closes on nothing: nothing lies between its jaws</source>
+        <translation>la pinza se cierra en vacío: no hay nada entre sus ramas</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1260,6 +1264,14 @@
     <message>
         <source>The history could not mark the attempt abandoned (%1).</source>
         <translation>El historial no pudo marcar el intento como abandonado (%1).</translation>
+    </message>
+    <message>
+        <source>The left forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>La pinza izquierda se cerró en vacío: no había nada entre sus ramas.</translation>
+    </message>
+    <message>
+        <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
+        <translation>La pinza derecha se cerró en vacío: no había nada entre sus ramas.</translation>
     </message>
 </context>
 <context>

@@ -38,6 +38,8 @@ const char* eventKey(sim::SceneEventKind k) {
       return "tissue-overstretch";
     case K::TissueTear:
       return "tissue-tear";
+    case K::GraspEmpty:
+      return "grasp-empty";
   }
   return "";
 }
@@ -71,6 +73,8 @@ QString eventText(const sim::SceneEvent& e) {
       return Cli::tr("tissue link %1 over-stretched (%2 %)").arg(e.index).arg(e.count / 10.0);
     case K::TissueTear:
       return Cli::tr("tissue tears: %n link(s) removed", nullptr, e.count);
+    case K::GraspEmpty:
+      return Cli::tr("forceps closes on nothing: nothing lies between its jaws");
   }
   return {};
 }

@@ -33,6 +33,9 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
   for (const sim::SceneEvent& e : events) {
     if (e.kind == sim::SceneEventKind::GrabTissue) facts.maxGrabNodes = std::max(facts.maxGrabNodes, e.count);
     if (e.kind == sim::SceneEventKind::PierceEntry) ++facts.pierceEntries;
+    if (e.kind == sim::SceneEventKind::GraspEmpty) facts.emptyGraspHand = e.hand;
+    if (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)
+      facts.emptyGraspHand = -1;
   }
   facts.stitches = countStitches(pierces);
   facts.pierces = pierces;

@@ -10,7 +10,9 @@
 //   pierces   PierceEntry events (the needle entering a wall, from either side);
 //   stitches  completed passes: the needle went in and out of one end of a severed vessel
 //             and then in and out of the other; a new stitch begins with the next entry;
-//   target i  some pierce point (entry or exit) lies within the tolerance of guides[i].
+//   target i  some pierce point (entry or exit) lies within the tolerance of guides[i];
+//   empty grasp  the hand whose latest grasp (either hand's GrabTissue, GripSuture or
+//             GraspEmpty) closed on nothing, or −1: for the page to say so until a grasp holds.
 
 #include "lesson/lesson.h"
 
@@ -26,6 +28,7 @@ struct AttemptFacts {
   int pierceEntries = 0;
   int stitches = 0;
   std::vector<sim::PierceEvent> pierces;
+  int emptyGraspHand = -1;  ///< see "empty grasp" above
 };
 
 /// Facts from the scene's events and pierces; `maxDisplacementMm` is the caller's (the

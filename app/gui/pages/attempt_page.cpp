@@ -221,6 +221,16 @@ void AttemptPage::showProgress(const AttemptProgress& progress) {
   }
   if (session_ && session_->setup().mode == assessment::AttemptMode::Learn)
     viewport_->setGuides(viewportGuides(lesson_, progress.guidesHit));
+  // jaws that closed on nothing say so until a grasp holds something
+  if (progress.emptyGraspHand >= 0) {
+    status_->setText(progress.emptyGraspHand == static_cast<int>(sim::Hand::Left)
+                         ? tr("The left forceps closed on nothing: nothing lay between its jaws.")
+                         : tr("The right forceps closed on nothing: nothing lay between its jaws."));
+    graspNoted_ = true;
+  } else if (graspNoted_) {
+    status_->clear();
+    graspNoted_ = false;
+  }
   if (done == static_cast<int>(lesson_.steps.size()) && !replaying_ && isActive())
     status_->setText(tr("Every step is done: finish the attempt when you are ready."));
 }

@@ -99,6 +99,7 @@ class AttemptPage : public QWidget {
   lesson::Lesson lesson_;
   QString language_;
   bool replaying_ = false;
+  bool graspNoted_ = false;  ///< the status says a grasp closed on nothing
 };
 
 }  // namespace microsim::gui

@@ -61,6 +61,7 @@ struct AttemptSetup {
 struct AttemptProgress {
   int stepsDone = 0;            ///< steps whose conditions are met, in order
   std::vector<bool> guidesHit;  ///< per lesson guide: a pierce within 0.1 mm of its target
+  int emptyGraspHand = -1;      ///< the hand whose latest grasp closed on nothing (progress.h), or −1
   bool operator==(const AttemptProgress&) const = default;
 };
 

@@ -169,38 +169,36 @@ void Scene::placeTools(const InputFrame& frame) {
 
 void Scene::grab(int hand) {
   tools::Forceps& f = *forceps_[static_cast<std::size_t>(hand)];
-  const auto tips = f.tips();
-  const double r = f.def().grabRadius;
 
-  // the suture first: the node nearest the tip segment's middle
+  // the suture first: the point of the needle or thread between the jaws nearest where they meet
   if (suture_) {
-    const std::vector<int> near = tools::pointsNearSegment(sutureState_.x, tips[0], tips[1], r);
-    if (!near.empty()) {
-      const Vec3 mid = 0.5 * (tips[0] + tips[1]);
-      int best = near.front();
-      for (int i : near)
-        if ((sutureState_.x.col(i) - mid).squaredNorm() < (sutureState_.x.col(best) - mid).squaredNorm())
-          best = i;
-      const bool needle = suture_->needleLinks() > 0 && best <= suture_->swage();
-      f.holdSuture(best, sutureState_.x.col(best), needle, suture::needleRotation(*suture_, sutureState_.x));
-      addEvent(SceneEventKind::GripSuture, hand, best, 1);
+    const tools::GraspRegion region = f.graspRegion(suture_->def().contactRadius);
+    if (const auto at = tools::chainPointBetweenJaws(region, sutureState_.x, sutureState_.alive)) {
+      f.holdSuture(*at, *suture_, sutureState_.x);
+      addEvent(SceneEventKind::GripSuture, hand, f.heldSutureNode(), 1);
       return;
     }
   }
 
-  // then the free tissue nodes between the tips (a needle holder does not take tissue)
-  if (lastFrame_ && lastFrame_->hands[static_cast<std::size_t>(hand)].instrument == Instrument::NeedleHolder)
+  // then the tissue faces between the jaws (a needle holder does not take tissue), but not
+  // those the other hand holds
+  const bool holder =
+      lastFrame_ && lastFrame_->hands[static_cast<std::size_t>(hand)].instrument == Instrument::NeedleHolder;
+  std::vector<tools::FaceGrasp> faces;
+  if (!holder) {
+    const SpringModel& tissue = def_.tissue.model;
+    std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
+    for (int h = 0; h < kHandCount; ++h)
+      if (h != hand && forceps_[static_cast<std::size_t>(h)])
+        for (int n : forceps_[static_cast<std::size_t>(h)]->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
+    faces = tools::facesBetweenJaws(f.graspRegion(0.0), tissue, state_.x, skip);
+  }
+  if (faces.empty()) {
+    addEvent(SceneEventKind::GraspEmpty, hand, -1, 0);
     return;
-  const SpringModel& tissue = def_.tissue.model;
-  std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
-  for (int i = 0; i < tissue.nodeCount(); ++i) skip[static_cast<std::size_t>(i)] = tissue.isFixed(i) ? 1 : 0;
-  for (int h = 0; h < kHandCount; ++h)
-    if (h != hand && forceps_[static_cast<std::size_t>(h)])
-      for (int n : forceps_[static_cast<std::size_t>(h)]->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
-  const std::vector<int> nodes = tools::pointsNearSegment(state_.x, tips[0], tips[1], r, skip);
-  if (nodes.empty()) return;
-  f.holdTissue(nodes, state_.x);
-  addEvent(SceneEventKind::GrabTissue, hand, nodes.front(), static_cast<int>(nodes.size()));
+  }
+  f.holdTissue(faces, def_.tissue.model, state_.x);
+  addEvent(SceneEventKind::GrabTissue, hand, f.heldNodes().front(), static_cast<int>(f.heldNodes().size()));
 }
 
 void Scene::stepSuture() {
@@ -223,7 +221,7 @@ void Scene::stepSuture() {
   tipAfter_ = sutureState_.x.col(0);
   tangentAfter_ = tools::needleTipTangent(*suture_, sutureState_.x);
   needleHeld_ = false;
-  for (const suture::Grip& g : grips) needleHeld_ = needleHeld_ || g.node <= suture_->swage();
+  for (const suture::Grip& g : grips) needleHeld_ = needleHeld_ || suture::gripHoldsNeedle(*suture_, g);
   for (const suture::SutureEvent& e : report.events) {
     if (e.kind == suture::SutureEventKind::Break) {
       addEvent(SceneEventKind::SutureBreak, -1, e.link, 1);
@@ -362,9 +360,15 @@ void Scene::assembleControls() {
     controls_.add(node, target);
   };
 
-  // forceps first (a hand wins), then the scene's own controls, then the suture's pull
+  // forceps first (a hand wins; as point springs where the solver takes them), then the
+  // scene's own controls, then the suture's pull
+  std::vector<PointSpring> holds;
   for (const auto& f : forceps_) {
     if (!f || f->heldNodes().empty()) continue;
+    if (solver_->supportsPointSprings()) {
+      f->appendHoldSprings(holds);
+      continue;
+    }
     const Points targets = f->heldTargets();
     for (std::size_t k = 0; k < f->heldNodes().size(); ++k)
       add(f->heldNodes()[k], targets.col(static_cast<Eigen::Index>(k)));
@@ -376,6 +380,7 @@ void Scene::assembleControls() {
     add(coupling_.nodes[static_cast<std::size_t>(c)], coupling_.targets.col(c));
   controls_.springs = couplingSprings_;
   if (indent_) controls_.springs.push_back(tools::indentationSpring(tissue, *indent_, tipAfter_, indentStiffness_));
+  controls_.springs.insert(controls_.springs.end(), holds.begin(), holds.end());
 }
 
 void Scene::checkStretch(const std::vector<int>& moved) {
@@ -624,8 +629,14 @@ std::uint64_t Scene::hash() const {
   for (const auto& f : forceps_) {
     if (!f) continue;
     const int node = f->heldSutureNode();
+    const double fraction = f->heldSutureFraction();
     h = fnv1a64(&node, sizeof node, h);
+    h = fnv1a64(&fraction, sizeof fraction, h);
     h = fnv1a64(f->heldNodes().data(), sizeof(int) * f->heldNodes().size(), h);
+    for (const tools::HeldFacePoint& p : f->heldFaces()) {
+      h = fnv1a64(&p.face, sizeof p.face, h);
+      h = fnv1a64(p.barycentric.data(), sizeof(double) * 3, h);
+    }
   }
   const std::int64_t alive = def_.tissue.model.aliveLinkCount();
   h = fnv1a64(&alive, sizeof alive, h);

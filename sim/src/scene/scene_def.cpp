@@ -207,7 +207,7 @@ bool SceneReader::solver(const json& v, TissueSolverDef& out) {
 }
 
 bool SceneReader::forceps(const json& v, const std::string& path, SceneDef& out) {
-  if (!object(v, path, {"hand", "mesh", "scale", "opening_deg", "grab_radius", "close_at"}))
+  if (!object(v, path, {"hand", "mesh", "scale", "opening_deg", "hold_stiffness", "close_at"}))
     return false;
   ForcepsDef def;
   const json* hand = nullptr;
@@ -224,7 +224,7 @@ bool SceneReader::forceps(const json& v, const std::string& path, SceneDef& out)
   SurfaceMeshOptions options;
   if (!optPositive(v, path, "scale", options.scale) ||
       !optPositive(v, path, "opening_deg", def.openingDeg) ||
-      !optPositive(v, path, "grab_radius", def.grabRadius) ||
+      !optPositive(v, path, "hold_stiffness", def.holdStiffness) ||
       !optPositive(v, path, "close_at", def.closeAt))
     return false;
   if (def.openingDeg >= 90.0) return fail(SceneErrorKind::InvalidValue, key(path, "opening_deg"));

@@ -68,12 +68,35 @@ Eigen::Matrix3d crossCovariance(const Points& r, const Vec3& rc, const Points& x
 
 }  // namespace
 
+bool gripHoldsNeedle(const SutureModel& model, const Grip& grip) {
+  return model.needleLinks() > 0 &&
+         (grip.node < model.swage() || (grip.node == model.swage() && grip.fraction == 0.0));
+}
+
+Vec3 gripPoint(const Points& x, const Grip& grip) {
+  if (grip.fraction == 0.0) return x.col(grip.node);
+  return (1.0 - grip.fraction) * x.col(grip.node) + grip.fraction * x.col(grip.node + 1);
+}
+
+std::array<Vec3, 2> clampedLinkEnds(const SutureModel& model, const Grip& grip, const Vec3& point,
+                                    const Vec3& direction) {
+  const double length = model.rest(grip.node);
+  return {point - grip.fraction * length * direction, point + (1.0 - grip.fraction) * length * direction};
+}
+
 std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
                                               std::span<const Grip> grips, const Piece& piece) {
   std::vector<ChainConstraint> out;
-  for (std::size_t g = 0; g < grips.size(); ++g)
-    if (grips[g].node >= piece.first && grips[g].node <= piece.last)
-      out.push_back({grips[g].node, grips[g].position, true, static_cast<int>(g)});
+  for (std::size_t g = 0; g < grips.size(); ++g) {
+    const Grip& grip = grips[g];
+    if (grip.fraction == 0.0) {
+      if (grip.node >= piece.first && grip.node <= piece.last)
+        out.push_back({grip.node, grip.position, true, static_cast<int>(g)});
+    } else if (grip.node >= piece.first && grip.node + 1 <= piece.last) {
+      out.push_back({grip.node, state.x.col(grip.node), true, static_cast<int>(g)});
+      out.push_back({grip.node + 1, state.x.col(grip.node + 1), true, static_cast<int>(g)});
+    }
+  }
   for (std::size_t k = 0; k < state.pierces.size(); ++k) {
     const Pierce& p = state.pierces[k];
     if (activePierce(model, p) && p.node >= piece.first && p.node <= piece.last)

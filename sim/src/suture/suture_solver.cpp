@@ -22,10 +22,15 @@ bool validInput(const SutureModel& model, const SutureState& state, std::span<co
       params.iterations < 1 || !std::isfinite(params.maxSubstepMotion) ||
       !std::isfinite(state.substep) || state.substep < 0.0)
     return false;
-  for (const Grip& g : grips)
+  for (const Grip& g : grips) {
     if (g.node < 0 || g.node >= model.nodeCount() || !g.position.allFinite() ||
-        !g.rotation.allFinite())
+        !g.rotation.allFinite() || !(g.fraction >= 0.0 && g.fraction < 1.0))
       return false;
+    if (g.fraction == 0.0) continue;
+    // between two nodes: an intact link; on the thread, the direction it is clamped along
+    if (g.node + 1 >= model.nodeCount() || !state.alive[static_cast<std::size_t>(g.node)]) return false;
+    if (!gripHoldsNeedle(model, g) && !(g.direction.allFinite() && g.direction.norm() > 0.0)) return false;
+  }
   for (const Pierce& p : state.pierces)
     if (p.node < 0 || p.node >= model.nodeCount() || !p.point.allFinite()) return false;
   return true;
@@ -147,8 +152,8 @@ int SutureSolver::substepCount(const SutureModel& model, const SutureState& stat
   // the grips' moves, the needle grip's turn, the fastest node's velocity over the step
   double motion = 0.0;
   for (const Grip& g : grips) {
-    motion = std::max(motion, (g.position - state.x.col(g.node)).norm());
-    if (g.oriented && model.needleLinks() > 0 && g.node <= model.swage()) {
+    motion = std::max(motion, (g.position - gripPoint(state.x, g)).norm());
+    if (g.oriented && gripHoldsNeedle(model, g)) {
       const Eigen::AngleAxisd turn(g.rotation * needleRotation(model, state.x).transpose());
       const double size = model.arc(0, model.swage());
       motion = std::max(motion, std::abs(turn.angle()) * size);
@@ -178,9 +183,17 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
   const int selfSkip =
       std::max(2, static_cast<int>(std::ceil(2.0 * radius / model.rest(model.linkCount() - 1))) + 1);
 
-  // where the grips start from: their nodes now, and the needle's pose
+  // where the grips start from: their points now (a clamped thread link: its direction), and
+  // the needle's pose
   gripFrom_.resize(grips.size());
-  for (std::size_t g = 0; g < grips.size(); ++g) gripFrom_[g] = state.x.col(grips[g].node);
+  clampFrom_.resize(grips.size());
+  for (std::size_t g = 0; g < grips.size(); ++g) {
+    gripFrom_[g] = gripPoint(state.x, grips[g]);
+    if (grips[g].fraction > 0.0 && !gripHoldsNeedle(model, grips[g])) {
+      const Vec3 link = state.x.col(grips[g].node + 1) - state.x.col(grips[g].node);
+      clampFrom_[g] = link.norm() > 0.0 ? Vec3(link.normalized()) : Vec3(grips[g].direction.normalized());
+    }
+  }
   const Eigen::Quaterniond needleFrom(needleRotation(model, state.x));
 
   movable_.resize(static_cast<std::size_t>(nodes));
@@ -208,28 +221,38 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
 
     // leaders: interpolated grips (an oriented needle grip poses the needle), active pierces
     leaders_.clear();
-    int needleAnchor = swage;
-    bool needleHeld = false;
+    const Grip* needleGrip = nullptr;
     Eigen::Matrix3d needlePose = needleFrom.toRotationMatrix();
     for (std::size_t g = 0; g < grips.size(); ++g) {
-      current_[g].position = (1.0 - f) * gripFrom_[g] + f * grips[g].position;
-      leaders_.push_back({grips[g].node, current_[g].position});
-      if (grips[g].node <= swage && model.needleLinks() > 0 && !needleHeld) {
-        needleHeld = true;
-        needleAnchor = grips[g].node;
-        if (grips[g].oriented)
-          needlePose = needleFrom.slerp(f, Eigen::Quaterniond(grips[g].rotation)).toRotationMatrix();
+      const Grip& grip = grips[g];
+      current_[g].position = (1.0 - f) * gripFrom_[g] + f * grip.position;
+      const bool onNeedle = gripHoldsNeedle(model, grip);
+      if (grip.fraction == 0.0) {
+        leaders_.push_back({grip.node, current_[g].position});
+      } else if (!onNeedle) {
+        // a clamped thread link: both its nodes, the link turning to the grip's direction
+        const Vec3 direction = ((1.0 - f) * clampFrom_[g] + f * grip.direction.normalized()).normalized();
+        current_[g].direction = direction;
+        const std::array<Vec3, 2> ends = clampedLinkEnds(model, grip, current_[g].position, direction);
+        leaders_.push_back({grip.node, ends[0]});
+        leaders_.push_back({grip.node + 1, ends[1]});
+      }
+      if (onNeedle && needleGrip == nullptr) {
+        needleGrip = &current_[g];
+        if (grip.oriented)
+          needlePose = needleFrom.slerp(f, Eigen::Quaterniond(grip.rotation)).toRotationMatrix();
       }
     }
+    const bool needleHeld = needleGrip != nullptr;
     if (needleHeld) {
-      // a held needle keeps its pose (or turns to the grip's): every needle node is posed
+      // a held needle keeps its pose (or turns to the grip's): every needle node is posed from
+      // the grip point, where the grip's node or its point between two nodes lies at rest
       const Points& r = model.needleShape();
-      Vec3 target = Vec3::Zero();
-      for (const Leader& a : leaders_)
-        if (a.node == needleAnchor) target = a.position;
+      const int a = needleGrip->node;
+      const double t = needleGrip->fraction;
+      const Vec3 anchor = t == 0.0 ? Vec3(r.col(a)) : Vec3((1.0 - t) * r.col(a) + t * r.col(a + 1));
       for (int k = 0; k <= swage; ++k)
-        if (k != needleAnchor)
-          leaders_.push_back({k, target + needlePose * (r.col(k) - r.col(needleAnchor))});
+        if (k != a || t != 0.0) leaders_.push_back({k, needleGrip->position + needlePose * (r.col(k) - anchor)});
     }
     for (const Pierce& p : state.pierces)
       if (p.node >= swage) leaders_.push_back({p.node, p.point});

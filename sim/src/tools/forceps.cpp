@@ -53,49 +53,75 @@ std::vector<std::array<int, 3>> jawTriangles(const ForcepsDef& def) {
   return out;
 }
 
-std::vector<int> pointsNearSegment(const Points& x, const Vec3& a, const Vec3& b, double radius,
-                                   const std::vector<std::uint8_t>& skip) {
-  std::vector<int> out;
-  const Vec3 d = b - a;
-  const double dd = d.squaredNorm();
-  const double r2 = radius * radius;
-  for (int i = 0; i < static_cast<int>(x.cols()); ++i) {
-    if (!skip.empty() && skip[static_cast<std::size_t>(i)]) continue;
-    const Vec3 p = x.col(i);
-    const double t = dd > 0.0 ? std::clamp((p - a).dot(d) / dd, 0.0, 1.0) : 0.0;
-    if ((p - (a + t * d)).squaredNorm() <= r2) out.push_back(i);
-  }
-  return out;
-}
-
 bool Forceps::update(const Eigen::Isometry3d& pose, double closure, bool& released) {
   const bool wasClosed = closed();
+  closedFrom_ = closure_;
   pose_ = pose;
   closure_ = closure;
   released = wasClosed && !closed();
   return !wasClosed && closed();
 }
 
-void Forceps::holdTissue(const std::vector<int>& nodes, const Points& x) {
-  nodes_ = nodes;
-  offsets_.resize(3, static_cast<Eigen::Index>(nodes.size()));
+void Forceps::holdTissue(const std::vector<FaceGrasp>& faces, const SpringModel& tissue, const Points& x) {
   const Eigen::Isometry3d inverse = pose_.inverse();
-  for (std::size_t k = 0; k < nodes.size(); ++k)
-    offsets_.col(static_cast<Eigen::Index>(k)) = inverse * Vec3(x.col(nodes[k]));
+
+  // each face's point kept where it is in the tool frame, its share of the stiffness by area
+  double area = 0.0;
+  for (const FaceGrasp& g : faces) area += g.area;
+  faces_.clear();
+  for (const FaceGrasp& g : faces) {
+    HeldFacePoint p;
+    p.face = g.face;
+    p.corners = tissue.triangles()[static_cast<std::size_t>(g.face)];
+    p.barycentric = g.barycentric;
+    Vec3 point = Vec3::Zero();
+    for (std::size_t c = 0; c < 3; ++c) point += g.barycentric[static_cast<Eigen::Index>(c)] * x.col(p.corners[c]);
+    p.offset = inverse * point;
+    p.share = area > 0.0 ? g.area / area : 1.0 / static_cast<double>(faces.size());
+    faces_.push_back(p);
+  }
+
+  // their free corners, for solvers that hold nodes
+  nodes_.clear();
+  for (const HeldFacePoint& p : faces_)
+    for (int n : p.corners)
+      if (!tissue.isFixed(n)) nodes_.push_back(n);
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  offsets_.resize(3, static_cast<Eigen::Index>(nodes_.size()));
+  for (std::size_t k = 0; k < nodes_.size(); ++k)
+    offsets_.col(static_cast<Eigen::Index>(k)) = inverse * Vec3(x.col(nodes_[k]));
 }
 
-void Forceps::holdSuture(int node, const Vec3& position, bool needle,
-                         const Eigen::Matrix3d& needleRotation) {
-  sutureNode_ = node;
-  needle_ = needle;
-  sutureOffset_ = pose_.inverse() * position;
-  needleRelative_ = pose_.linear().transpose() * needleRotation;
+void Forceps::holdSuture(const ChainGrasp& at, const suture::SutureModel& model, const Points& x) {
+  // a point within rounding of a node is the node
+  const double length = (x.col(at.link + 1) - x.col(at.link)).norm();
+  suture::Grip where;
+  where.node = at.link;
+  where.fraction = at.fraction;
+  if (at.fraction * length <= kGripSnap) {
+    where.fraction = 0.0;
+  } else if ((1.0 - at.fraction) * length <= kGripSnap) {
+    where.node = at.link + 1;
+    where.fraction = 0.0;
+  }
+
+  // the point, the needle's rotation and the held link's direction, kept in the tool frame
+  sutureNode_ = where.node;
+  sutureFraction_ = where.fraction;
+  needle_ = suture::gripHoldsNeedle(model, where);
+  sutureOffset_ = pose_.inverse() * suture::gripPoint(x, where);
+  needleRelative_ = pose_.linear().transpose() * suture::needleRotation(model, x);
+  const Vec3 link = where.fraction > 0.0 ? Vec3(x.col(where.node + 1) - x.col(where.node)) : Vec3::Zero();
+  linkDirection_ = link.norm() > 0.0 ? Vec3(pose_.linear().transpose() * link.normalized()) : Vec3::Zero();
 }
 
 void Forceps::release() {
+  faces_.clear();
   nodes_.clear();
   offsets_.resize(3, 0);
   sutureNode_ = -1;
+  sutureFraction_ = 0.0;
   needle_ = false;
 }
 
@@ -105,13 +131,28 @@ Points Forceps::heldTargets() const {
   return out;
 }
 
+void Forceps::appendHoldSprings(std::vector<PointSpring>& out) const {
+  for (const HeldFacePoint& p : faces_) {
+    PointSpring spring;
+    for (std::size_t c = 0; c < 3; ++c) {
+      spring.nodes[c] = p.corners[c];
+      spring.weights[c] = p.barycentric[static_cast<Eigen::Index>(c)];
+    }
+    spring.anchor = pose_ * p.offset;
+    spring.k = def_.holdStiffness * p.share;
+    out.push_back(spring);
+  }
+}
+
 std::optional<suture::Grip> Forceps::grip() const {
   if (sutureNode_ < 0) return std::nullopt;
   suture::Grip g;
   g.node = sutureNode_;
+  g.fraction = sutureFraction_;
   g.position = pose_ * sutureOffset_;
   g.oriented = needle_;
   g.rotation = pose_.linear() * needleRelative_;
+  if (sutureFraction_ > 0.0 && !needle_) g.direction = pose_.linear() * linkDirection_;
   return g;
 }
 

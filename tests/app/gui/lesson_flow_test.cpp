@@ -12,6 +12,7 @@
 #include "microsim/assessment/storage/people_store.h"
 #include "microsim/sim/scene/recording.h"
 
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -26,6 +27,9 @@
 #include "app/gui/core_profile.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 namespace microsim::gui {
 namespace {
@@ -158,6 +162,29 @@ TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
   QTest::mouseClick(app.child<QPushButton>("backButton"), Qt::LeftButton);
   ASSERT_EQ(app.window->currentPage(), app.window->lessonListPage());
   EXPECT_NE(app.window->lessonListPage()->status(1), LessonStatus::NotStarted);
+}
+
+// Lesson 1 by keyboard: the right forceps moved 1 mm towards the viewer, away from the vessel,
+// and its jaws closed (Space): they close on nothing, and the page says so.
+TEST(LessonFlow, JawsClosedOnNothingAreReportedOnThePage) {
+  App app;
+  app.createTrainee(QStringLiteral("Cy Trainee"));
+  app.openLesson(0, "learnButton");
+  AttemptPage* attempt = app.window->attemptPage();
+  ASSERT_TRUE(attempt->isActive());
+  QTRY_VERIFY_WITH_TIMEOUT(attempt->runner()->steps() > 5, 20000);
+  Viewport* viewport = app.window->viewport();
+  viewport->setFocus();
+  for (int k = 0; k < 20; ++k) QTest::keyClick(viewport, Qt::Key_E);
+  QTest::keyPress(viewport, Qt::Key_Space);
+  auto* status = app.child<QLabel>("attemptStatus");
+  const QString expected = AttemptPage::tr("The right forceps closed on nothing: nothing lay between its jaws.");
+  QTRY_COMPARE_WITH_TIMEOUT(status->text(), expected, 20000);
+  QTest::keyRelease(viewport, Qt::Key_Space);
+  const std::vector<sim::SceneEvent> events = attempt->runner()->events();
+  EXPECT_TRUE(std::any_of(events.begin(), events.end(), [](const sim::SceneEvent& e) {
+    return e.kind == sim::SceneEventKind::GraspEmpty && e.hand == static_cast<int>(sim::Hand::Right);
+  }));
 }
 
 TEST(LessonFlow, ClosingMidAttemptLeavesItUnfinished) {

@@ -60,6 +60,26 @@ TEST(LessonProgress, FactsComeFromEvents) {
   EXPECT_EQ(f.stitches, 0);
 }
 
+TEST(LessonProgress, AnEmptyGraspIsAFactUntilAGraspHolds) {
+  const auto event = [](sim::SceneEventKind kind, int hand) {
+    sim::SceneEvent e;
+    e.kind = kind;
+    e.hand = hand;
+    return e;
+  };
+  using K = sim::SceneEventKind;
+  EXPECT_EQ(collectFacts({}, {}, 0.0).emptyGraspHand, -1);
+  EXPECT_EQ(collectFacts({event(K::GraspEmpty, 1)}, {}, 0.0).emptyGraspHand, 1);
+  // a release or a pierce does not clear it; the other hand's grasp on nothing replaces it
+  EXPECT_EQ(collectFacts({event(K::GraspEmpty, 1), event(K::ReleaseTissue, 0), event(K::PierceEntry, -1)}, {}, 0.0)
+                .emptyGraspHand,
+            1);
+  EXPECT_EQ(collectFacts({event(K::GraspEmpty, 1), event(K::GraspEmpty, 0)}, {}, 0.0).emptyGraspHand, 0);
+  // a grasp that holds, tissue or suture, by either hand, clears it
+  EXPECT_EQ(collectFacts({event(K::GraspEmpty, 1), event(K::GrabTissue, 0)}, {}, 0.0).emptyGraspHand, -1);
+  EXPECT_EQ(collectFacts({event(K::GraspEmpty, 0), event(K::GripSuture, 0)}, {}, 0.0).emptyGraspHand, -1);
+}
+
 // the shipped stitch recording completes lessons 02 and 03 (their targets sit where it pierces)
 TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
   sim::Recording recording;

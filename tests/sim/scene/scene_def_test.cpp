@@ -116,6 +116,22 @@ TEST(SceneDef, AnUnknownToolFieldIsNamedWithItsPosition) {
   EXPECT_EQ(e.column, 58);
 }
 
+TEST(SceneDef, AForcepsHoldStiffnessIsReadAndARadiusOfGrabIsNoLongerAField) {
+  const auto forceps = [](const std::string& fields) {
+    return R"({"objects": [{"type": "lattice", "size": [2, 2, 2]}], "tools": {"forceps": [
+      {"hand": "right", "mesh": "forceps_jaw.obj")" + fields + "}]}}";
+  };
+  SceneDefLoad load = parseSceneDef(forceps(""), "test.json", kMeshes);
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  EXPECT_EQ(std::get<SceneDef>(load).forceps[1]->holdStiffness, 3e5);
+  load = parseSceneDef(forceps(R"(, "hold_stiffness": 5e4)"), "test.json", kMeshes);
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  EXPECT_EQ(std::get<SceneDef>(load).forceps[1]->holdStiffness, 5e4);
+  EXPECT_EQ(sceneDefErrorOf(forceps(R"(, "hold_stiffness": 0)")).field, "tools.forceps[0].hold_stiffness");
+  // the grasp is the jaws' geometry (tools/jaw_grasp.h), not a radius around their tips
+  EXPECT_EQ(sceneDefErrorOf(forceps(R"(, "grab_radius": 0.08)")).field, "tools.forceps[0].grab_radius");
+}
+
 TEST(SceneDef, AMissingJawMeshIsAMeshImportError) {
   const SceneError e = sceneDefErrorOf(
       "{\"objects\": [{\"type\": \"lattice\", \"size\": [2, 2, 2]}],\n"

@@ -77,6 +77,27 @@ TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
   EXPECT_TRUE(scene.tissueState().x.allFinite());
 }
 
+// The script puts the tools' tips on needle nodes (the holder's on the swage, the forceps' on
+// node 1): the grasp takes the needle there, on the node, as a node grip always did.
+TEST(Stitch, TheScriptedToolsGripTheNeedleAtTheNodesTheScriptMeans) {
+  const SceneDef def = anastomosis();
+  const Recording rec = scriptedStitch(def);
+  Scene scene(def);
+  for (const InputFrame& f : rec.frames) {
+    scene.step(f);
+    for (const Hand hand : {Hand::Left, Hand::Right}) {
+      if (scene.forceps(hand)->holdsSuture()) {
+        ASSERT_EQ(scene.forceps(hand)->heldSutureFraction(), 0.0);
+      }
+    }
+  }
+  std::vector<int> gripped;
+  for (const SceneEvent& e : scene.events())
+    if (e.kind == SceneEventKind::GripSuture) gripped.push_back(e.index);
+  const StitchScriptDef script;
+  EXPECT_EQ(gripped, (std::vector<int>{script.gripNode, script.pullGripNode}));
+}
+
 TEST(Stitch, TheSameFramesGiveTheSameBits) {
   const SceneDef def = anastomosis();
   const Recording rec = scriptedStitch(def);

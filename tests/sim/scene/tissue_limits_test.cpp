@@ -107,10 +107,10 @@ struct DragResult {
   double largestStretch = 0.0;  ///< over every step's end, alive links
 };
 
-// the jaws close (crossing close_at at 0.8, 0.2 mm apart across the top of end 0's cut
-// ring, just outside its outer surface), then the closed forceps moves by `drag` (mm) in
-// 0.1 mm steps and holds there; every step is checked: finite, and no alive link beyond
-// the tear strain
+// the jaws close (crossing close_at at 0.8) on the top of end 0's cut ring, the tool's tip
+// 0.02 mm into its outer surface (the open tips stand above it, astride the edge), then the
+// closed forceps moves by `drag` (mm) in 0.1 mm steps and holds there; every step is checked:
+// finite, and no alive link beyond the tear strain
 DragResult dragCutEdge(const Vec3& drag) {
   SceneDefLoad load = loadSceneDef(kLimitsScenes + "orientation.json");
   EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
@@ -119,7 +119,7 @@ DragResult dragCutEdge(const Vec3& drag) {
   EXPECT_GT(tear, 0.0);
   const SceneVessel& end0 = scene.def().vessels.front();
   const Vec3 cut = end0.def.origin + end0.def.length * end0.def.direction;
-  const Vec3 start = cut + Vec3(0, 0, end0.def.radius + 0.01);
+  const Vec3 start = cut + Vec3(0, 0, end0.def.radius - 0.02);
 
   DragResult r;
   int k = 0;

@@ -34,6 +34,35 @@ int slideAtDefaultTolerance(const SutureModel& m, SutureState& s, std::span<cons
   return slidePierces(m, s, grips, SutureStepParams{}.slideTolerance, events);
 }
 
+TEST(SutureGrips, AGripBetweenTwoNodesHoldsBothAndOnTheNeedleHoldsTheNeedle) {
+  const SutureModel m = needleAndThread();
+  const SutureState s = SutureState::laidOut(m);
+  const Piece whole{0, m.nodeCount() - 1};
+  Grip g;
+  g.node = 30;
+  g.fraction = 0.5;
+  g.position = Vec3(9, 9, 9);
+  const std::vector<ChainConstraint> between = pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
+  ASSERT_EQ(between.size(), 2u);
+  EXPECT_EQ(between[0].node, 30);
+  EXPECT_EQ(between[1].node, 31);
+  EXPECT_TRUE(between[0].hard && between[1].hard);
+  EXPECT_EQ(between[0].position, Vec3(s.x.col(30)));
+  EXPECT_EQ(between[1].position, Vec3(s.x.col(31)));
+  EXPECT_EQ(gripPoint(s.x, g), Vec3(0.5 * s.x.col(30) + 0.5 * s.x.col(31)));
+  // on a node: that node at the grip's position
+  g.fraction = 0.0;
+  const std::vector<ChainConstraint> on = pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
+  ASSERT_EQ(on.size(), 1u);
+  EXPECT_EQ(on[0].position, g.position);
+  // which grips hold the rigid needle: its links and the swage node, not the thread beyond
+  const int swage = m.swage();
+  EXPECT_TRUE(gripHoldsNeedle(m, Grip{swage - 1, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.9}));
+  EXPECT_TRUE(gripHoldsNeedle(m, Grip{swage, Vec3::Zero()}));
+  EXPECT_FALSE(gripHoldsNeedle(m, Grip{swage, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.1}));
+  EXPECT_FALSE(gripHoldsNeedle(m, Grip{swage + 1, Vec3::Zero()}));
+}
+
 TEST(SuturePierces, AnActivePierceNeverSlidesOntoTheRigidNeedle) {
   const SutureModel m = needleAndThread();
   SutureState s = SutureState::laidOut(m);

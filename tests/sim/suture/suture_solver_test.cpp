@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace microsim::sim::suture {
@@ -64,6 +65,76 @@ TEST_P(SolverTest, AnOrientedNeedleGripPosesTheWholeNeedle) {
     EXPECT_LT((s.x.col(k) - expected).norm(), 1e-12) << k;
   }
   EXPECT_LT(maxAbsStretch(m, s.x, s.alive), 1e-9);
+}
+
+TEST_P(SolverTest, ANeedleGripBetweenNodesPosesTheNeedleAboutThatPoint) {
+  const SutureModel m{SutureDef{}};
+  SutureState s = SutureState::laidOut(m);
+  auto solver = makeSutureSolver(GetParam());
+  Grip g;
+  g.node = 3;
+  g.fraction = 0.4;
+  g.oriented = true;
+  g.rotation = Eigen::AngleAxisd(0.7, Vec3(1, 2, 0).normalized()).toRotationMatrix();
+  g.position = Vec3(0.5, -0.2, 0.3);
+  ASSERT_TRUE(gripHoldsNeedle(m, g));
+  const Points& r = m.needleShape();
+  const Vec3 held = 0.6 * r.col(3) + 0.4 * r.col(4);
+  for (int k = 1; k <= 5; ++k) {
+    g.position += Vec3(0.02, 0.0, -0.01);
+    ASSERT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::Ok);
+    EXPECT_LT((gripPoint(s.x, g) - g.position).norm(), 1e-12);
+    for (int i = 0; i <= m.needleLinks(); ++i)
+      EXPECT_LT((s.x.col(i) - (g.position + g.rotation * (r.col(i) - held))).norm(), 1e-12) << i;
+  }
+  EXPECT_LT(maxAbsStretch(m, s.x, s.alive), 1e-9);
+}
+
+TEST_P(SolverTest, AGripBetweenThreadNodesClampsItsLinkAlongItsDirection) {
+  const SutureModel m = straightThread();
+  SutureState s = along(m, Vec3::Zero(), Vec3::UnitX());
+  auto solver = makeSutureSolver(GetParam());
+  Grip g;
+  g.node = 20;
+  g.fraction = 0.25;
+  g.position = Vec3(2.025, 0.0, 0.0);
+  ASSERT_FALSE(gripHoldsNeedle(m, g));
+  for (int k = 1; k <= 10; ++k) {
+    // carried up and turned a little each frame
+    g.position += Vec3(0.0, 0.0, 0.03);
+    g.direction = Vec3(std::cos(0.05 * k), std::sin(0.05 * k), 0.0);
+    ASSERT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::Ok);
+    const std::array<Vec3, 2> ends = clampedLinkEnds(m, g, g.position, g.direction);
+    EXPECT_LT((s.x.col(20) - ends[0]).norm(), 1e-12) << k;
+    EXPECT_LT((s.x.col(21) - ends[1]).norm(), 1e-12) << k;
+    EXPECT_LT((gripPoint(s.x, g) - g.position).norm(), 1e-12) << k;
+  }
+  EXPECT_TRUE(s.x.allFinite());
+}
+
+TEST_P(SolverTest, AGripBetweenNodesOffTheChainOrWithoutItsDirectionIsRejected) {
+  const SutureModel m = straightThread();
+  SutureState s = along(m, Vec3::Zero(), Vec3::UnitX());
+  const Points before = s.x;
+  auto solver = makeSutureSolver(GetParam());
+  Grip g;
+  g.node = 20;
+  g.position = Vec3(2.05, 0.0, 0.0);
+  g.direction = Vec3::UnitX();
+  for (const double fraction : {1.0, -0.1, std::nan("")}) {
+    g.fraction = fraction;
+    EXPECT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::InvalidInput);
+  }
+  g.fraction = 0.5;
+  g.direction = Vec3::Zero();
+  EXPECT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::InvalidInput);
+  g.direction = Vec3::UnitX();
+  g.node = 100;  // the tail: no link beyond it
+  EXPECT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::InvalidInput);
+  g.node = 20;
+  s.alive[20] = 0;  // a broken link holds nothing between its ends
+  EXPECT_EQ(solver->step(m, s, std::span<const Grip>(&g, 1), {}).status, SutureStepStatus::InvalidInput);
+  EXPECT_EQ(s.x, before);
 }
 
 TEST_P(SolverTest, APullBetweenTwoGripsBreaksAtTheThresholdNeverBefore) {

@@ -3,11 +3,14 @@
 // fixed-rate step that ties them together (DESIGN.md §Data flow of one frame).
 //
 // One step of dt = 1/rate consumes one InputFrame, in four timed stages:
-//   interactions  place the tools from the frame; a forceps that closes takes hold of the
-//                 suture (a grip, hard) or of the tissue between its tips (control nodes),
-//                 one that opens lets go; then (after collision) new pierces become soft
-//                 constraints of the suture, cut links are removed, and the tissue's controls
-//                 are assembled (scene controls, held nodes, the suture's pull);
+//   interactions  place the tools from the frame; a forceps that closes takes what lies
+//                 between its jaws (tools/jaw_grasp.h): the needle or thread anywhere along
+//                 it (a grip, hard), else the tissue faces there (barycentric points held
+//                 by point springs, or their corners as control nodes where the solver takes
+//                 no springs), else nothing, which is an event (GraspEmpty); one that opens
+//                 lets go; then (after collision) new pierces become soft constraints of the
+//                 suture, cut links are removed, and the tissue's controls are assembled
+//                 (scene controls, held faces, the suture's pull);
 //   suture        pierce points re-read from the tissue, the suture steps with the grips
 //                 (the needle moves with the hand holding it), the coupling pull is computed;
 //   collision     the needle tip's path this step is tested against the tissue faces
@@ -123,7 +126,9 @@ class Scene {
   const std::vector<PierceEvent>& pierces() const { return pierces_; }
 
   /// Golden-state hash: tissue positions and velocities, the suture's positions, previous
-  /// positions, links and pierces, what every forceps holds, and the step count.
+  /// positions, links and pierces, what every forceps holds (the suture node and the fraction
+  /// along its link, the held nodes, each held face and its barycentric point), and the step
+  /// count.
   std::uint64_t hash() const;
 
  private:

@@ -32,7 +32,7 @@
 //    two vessel ends, each clamped at its far ring, their cut ends facing across the gap.
 // FORCEPS: {"hand": "left"|"right" (required), "mesh" (required, OBJ/glTF of one jaw,
 //    relative to the scene file), "scale" (mm per file unit, 1), "opening_deg" (20),
-//    "grab_radius" (mm, 0.08), "close_at" (closure, 0.8)}
+//    "hold_stiffness" (g/s², 3e5), "close_at" (closure, 0.8)}
 // NEEDLE: {"shape": "curved"|"straight", "radius", "length" (needle, mm), "thread_length"
 //    (mm), "links", "needle_links", "break_stretch", "contact_radius", "friction", "drag",
 //    "position" ([x,y,z] mm) and "rotation" ([w,x,y,z], needle frame → scene) of the needle
@@ -95,7 +95,9 @@ struct ForcepsDef {
   Points jawVertices{3, 0};       ///< the jaw in its frame, mm (tip at the origin, along +x)
   std::vector<std::array<int, 3>> jawTriangles;
   double openingDeg = 20.0;       ///< angle of each jaw off the axis when open (degrees)
-  double grabRadius = 0.08;       ///< mm: reach of a grab around the tip segment
+  /// g/s²: how stiffly a grasp holds the tissue (tools/forceps.h: the hold), shared among
+  /// the points it holds
+  double holdStiffness = 3e5;
   double closeAt = 0.8;           ///< closure (0..1) at and above which the jaws hold
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // What happened during an attempt, as data for assessment (DESIGN.md §Assessment) and for
-// `microsim-cli run`: grabs and releases, pierces with their geometry, cuts, suture breaks,
+// `microsim-cli run`: grabs, releases and grasps on nothing, pierces with their geometry, cuts, suture breaks,
 // rejected input, tissue over-stretch and tears. The engine reports enums and numbers; words are the app's business.
 //
 // Units: millimetres, seconds, degrees.
@@ -13,9 +13,13 @@
 namespace microsim::sim {
 
 enum class SceneEventKind : std::uint8_t {
-  GrabTissue,     ///< a forceps closed on tissue: `count` nodes became control nodes
+  /// a forceps closed on tissue: faces between its jaws are held (`index` = the lowest node
+  /// it moves, `count` = how many nodes: the held faces' free corners)
+  GrabTissue,
   ReleaseTissue,  ///< it opened: `count` nodes were freed
-  GripSuture,     ///< a forceps closed on the suture (`index` = node; needle nodes ≤ swage)
+  /// a forceps closed on the suture (`index` = node, or the first node of the link it holds
+  /// between two nodes; needle nodes ≤ swage)
+  GripSuture,
   ReleaseSuture,  ///< it let go of the suture
   PierceEntry,    ///< the needle tip entered a wall (`index` into Scene::pierces())
   PierceExit,     ///< the needle tip left a wall (`index` into Scene::pierces())
@@ -34,6 +38,9 @@ enum class SceneEventKind : std::uint8_t {
   /// links stretched above SceneDef::limits.tear were removed, like a cut (`index` = the
   /// first, `count` = how many this step)
   TissueTear,
+  /// a forceps (`hand`) closed on nothing: no suture, and no tissue it may take, lay between
+  /// its jaws
+  GraspEmpty,
 };
 
 /// Which surface of a vessel a pierce crossed.

@@ -2,9 +2,17 @@
 // The suture's constraints (Brown et al. 2002 §4) and what they do beyond holding nodes:
 // sliding through soft constraints, breaking between hard ones, and the rigid needle.
 //
-// Hard constraints are grips: a forceps holds node `node` at `position` (and, when it holds the
-// needle with `oriented`, the whole needle in the pose `rotation`). Soft constraints are
-// pierces (suture_model.h): the suture passes through a point on a tissue face.
+// Hard constraints are grips: a forceps holds the point a `fraction` along the link from node
+// `node` to node + 1 at `position` (fraction 0: the node itself). A grip on the needle (a
+// needle link, or the swage node itself) holds the rigid needle: with `oriented` in the pose
+// `rotation`, and every needle node is posed from the grip point, so a needle grasped between
+// two nodes turns about that point. A grip on a thread node is a ball joint (the thread turns
+// about it); a grip between two thread nodes clamps the link it lies on: both nodes are held,
+// the link along `direction` through the grip point (the jaws close across the thread and it
+// cannot turn between them; two held nodes could not turn about a point between them anyway).
+// Where the rules below speak of a grip's node, a grip between nodes holds both (see
+// pieceConstraints). Soft constraints are pierces (suture_model.h): the suture passes through
+// a point on a tissue face.
 //
 // Path order. The tip makes the pierces one after another and the suture follows it through
 // them, so along the chain (node index, from the tip) each pierce lies nearer the tip than
@@ -45,6 +53,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -52,13 +61,26 @@
 
 namespace microsim::sim::suture {
 
-/// A hard constraint: a forceps holding a node.
+/// A hard constraint: a forceps holding a point of the chain (header essay).
 struct Grip {
   int node = 0;
-  Vec3 position = Vec3::Zero();                        ///< mm
+  Vec3 position = Vec3::Zero();                        ///< mm: where the held point must be
   bool oriented = false;                               ///< holds the needle's pose too
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< needle frame → world (oriented)
+  /// Along the link node → node + 1, in [0, 1): the held point is (1 − f) x_node + f x_{node+1}.
+  double fraction = 0.0;
+  /// Between two thread nodes: the held link's direction (unit, node → node + 1).
+  Vec3 direction = Vec3::Zero();
 };
+
+/// True when `grip` holds the rigid needle: it lies on a needle link or on the swage node.
+bool gripHoldsNeedle(const SutureModel& model, const Grip& grip);
+/// The chain point `grip` holds, at positions x (mm).
+Vec3 gripPoint(const Points& x, const Grip& grip);
+/// Where a grip between two thread nodes puts them, its point at `point` and the link along
+/// the unit `direction`: [0] node, [1] node + 1 (mm).
+std::array<Vec3, 2> clampedLinkEnds(const SutureModel& model, const Grip& grip, const Vec3& point,
+                                    const Vec3& direction);
 
 enum class SutureEventKind : std::uint8_t {
   Break,      ///< a link broke between two hard constraints (link = the broken link)
@@ -82,7 +104,9 @@ struct ChainConstraint {
   int source = -1;  ///< index into the grips or the pierces
 };
 
-/// Grips and active pierces of the piece [first, last], sorted by node (a grip wins a tie).
+/// Grips and active pierces of the piece [first, last], sorted by node (a grip wins a tie). A
+/// grip on a node gives one hard constraint at its position; a grip between two nodes gives
+/// two, at both nodes where x has them (after a substep: where the grip put them).
 std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
                                               std::span<const Grip> grips, const Piece& piece);
 

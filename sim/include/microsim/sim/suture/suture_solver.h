@@ -11,9 +11,10 @@
 // be pushed through by the length restore before the contact holds them.
 // Each substep:
 //   1. predict: x ← x + e^{−drag·h}(h/h_prev)(x − x_prev) + g h²   (Verlet; gravity from the model)
-//   2. leaders: grips at their interpolated targets (an oriented needle grip poses every
-//      needle node), active pierces at their points; the solver may carry the chain with
-//      them first (direct: carrySpans, chain_projection.h);
+//   2. leaders: grips at their interpolated targets (a needle grip poses every needle node
+//      from its point, a grip between two thread nodes places both along its direction:
+//      suture_constraints.h), active pierces at their points; the solver may carry the chain
+//      with them first (direct: carrySpans, chain_projection.h);
 //   3. up to `iterations` rounds of: contacts (capsules, surface, self; contact nodes become
 //      soft leaders, the paper's drape constraints) → the bending limit on free thread nodes
 //      (bending_limit.h) → restore link lengths (the solver) → rigid needle; a round whose contacts corrected nothing and whose lengths were restored
@@ -122,6 +123,7 @@ class SutureSolver {
   Points xStart_{3, 0};
   std::vector<Leader> leaders_;
   std::vector<Vec3> gripFrom_;
+  std::vector<Vec3> clampFrom_;  // per grip between thread nodes: the link's direction at the step's start
   std::vector<Grip> current_;
   std::vector<std::uint8_t> movable_, movableSurface_, contact_, selfTouched_, free_;
   std::vector<ContactExemption> exemptions_;
