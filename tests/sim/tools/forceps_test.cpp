@@ -277,7 +277,11 @@ Eigen::Isometry3d forcepsMoved(const Eigen::Isometry3d& from, int s) {
 // closed again at another point and angle, it is held there.
 TEST(Forceps, AJawClosingOnTheNeedleBetweenNodesHoldsItAtThatPointAndAngle) {
   ForcepsSutureRig rig;
-  auto& [scene, model, x, k] = rig;
+  // named references, not a structured binding: lambdas below capture them (clang 14)
+  Scene& scene = rig.scene;
+  const suture::SutureModel& model = rig.model;
+  const Points& x = rig.x;
+  int& k = rig.k;
   Eigen::Isometry3d away = Eigen::Isometry3d::Identity();
   away.translation() = Vec3(20, 20, 20);
   const auto graspAndCarry = [&](int link, double fraction, const auto& across) {
@@ -324,7 +328,11 @@ TEST(Forceps, AJawClosingOnTheNeedleBetweenNodesHoldsItAtThatPointAndAngle) {
 // direction in them (clamped), at its length.
 TEST(Forceps, AJawClosingOnTheThreadBetweenNodesHoldsItThere) {
   ForcepsSutureRig rig;
-  auto& [scene, model, x, k] = rig;
+  // named references, not a structured binding: lambdas below capture them (clang 14)
+  Scene& scene = rig.scene;
+  const suture::SutureModel& model = rig.model;
+  const Points& x = rig.x;
+  int& k = rig.k;
   const int link = 20;
   const double fraction = 0.5;
   ASSERT_GT(link, model.swage());
