@@ -281,7 +281,7 @@ KnotReading readKnotDiagram(const Points& x, const KnotDiagram& diagram, const K
       }
       bool closed = true;
       for (std::size_t k = from + 1; k < to && closed; ++k) {
-        closed = partner[k] > from;
+        closed = partner[k] >= from;
         to = std::max(to, partner[k]);
       }
       if (closed && to - from < bestTo - bestFrom) {
@@ -320,6 +320,20 @@ KnotReading readKnotDiagram(const Points& x, const KnotDiagram& diagram, const K
   return reading;
 }
 
+bool sameKnotReading(const KnotReading& a, const KnotReading& b) {
+  if (a.type != b.type || a.throws.size() != b.throws.size()) {
+    return false;
+  }
+  for (std::size_t k = 0; k < a.throws.size(); ++k) {
+    const KnotThrow& s = a.throws[k];
+    const KnotThrow& t = b.throws[k];
+    if (s.form != t.form || s.handedness != t.handedness || s.wraps != t.wraps) {
+      return false;
+    }
+  }
+  return true;
+}
+
 KnotReading recogniseKnot(const Points& x, std::span<const int> anchors,
                           const KnotRecognitionDef& def, const Vec3* hint) {
   // a clear picture from the last reading's direction needs no search
@@ -330,20 +344,43 @@ KnotReading recogniseKnot(const Points& x, std::span<const int> anchors,
     }
   }
   const std::vector<Vec3> directions = def.directions.empty() ? knotViewDirections(x) : def.directions;
-  KnotReading best;
-  double bestScore = -1e300;
+  std::vector<KnotReading> clear;
+  KnotReading clearest;
+  double clearestScore = -1e300;
   for (const Vec3& d : directions) {
     const KnotDiagram diagram = projectKnot(x, anchors, d);
     KnotReading reading = readKnotDiagram(x, diagram, def);
-    // clearness first, then ends that cross nothing, then the fewest crossings left
-    const double score = diagram.quality - (diagram.closureCrossings > 0 ? 0.5 : 0.0) -
-                         1e-3 * static_cast<double>(reading.crossings);
-    if (score > bestScore) {
-      bestScore = score;
-      best = std::move(reading);
+    if (diagram.quality >= def.clearQuality && diagram.closureCrossings == 0) {
+      clear.push_back(reading);
+    }
+    const double score = diagram.quality - (diagram.closureCrossings > 0 ? 0.5 : 0.0);
+    if (score > clearestScore) {
+      clearestScore = score;
+      clearest = std::move(reading);
     }
   }
-  return best;
+  if (clear.empty()) {
+    return clearest;  // no clear picture: the least unclear one
+  }
+  // a picture RI and RII could not clear (it needs RIII) says less than one they could: where
+  // some pictures are fully explained, only they vote
+  if (std::any_of(clear.begin(), clear.end(), [](const KnotReading& r) { return r.unexplained == 0; })) {
+    std::erase_if(clear, [](const KnotReading& r) { return r.unexplained > 0; });
+  }
+  // the clear pictures vote: a twist's half turns and the tails' crossings depend on where one
+  // looks from, the knot the most of them show does not; ties go to the clearer picture
+  std::size_t winner = 0;
+  int winnerVotes = 0;
+  for (std::size_t k = 0; k < clear.size(); ++k) {
+    const auto votes = static_cast<int>(std::count_if(clear.begin(), clear.end(), [&](const KnotReading& r) {
+      return sameKnotReading(r, clear[k]);
+    }));
+    if (votes > winnerVotes || (votes == winnerVotes && clear[k].quality > clear[winner].quality)) {
+      winner = k;
+      winnerVotes = votes;
+    }
+  }
+  return clear[winner];
 }
 
 }  // namespace microsim::sim::suture

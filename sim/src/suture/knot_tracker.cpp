@@ -8,21 +8,6 @@ namespace microsim::sim::suture {
 
 namespace {
 
-// the same throws, one for one, and the same name
-bool sameKnotStructure(const KnotReading& a, const KnotReading& b) {
-  if (a.type != b.type || a.throws.size() != b.throws.size()) {
-    return false;
-  }
-  for (std::size_t k = 0; k < a.throws.size(); ++k) {
-    const KnotThrow& s = a.throws[k];
-    const KnotThrow& t = b.throws[k];
-    if (s.form != t.form || s.handedness != t.handedness || s.wraps != t.wraps) {
-      return false;
-    }
-  }
-  return true;
-}
-
 bool isTieableKnot(const KnotReading& r) {
   return !r.throws.empty() && r.type != KnotType::None && r.type != KnotType::Unknown;
 }
@@ -54,7 +39,8 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
       const KnotDiagram diagram = projectKnot(x, anchors, *direction_);
       if (diagram.quality >= def_.recognition.clearQuality && diagram.closureCrossings == 0) {
         reading = readKnotDiagram(x, diagram, def_.recognition);
-        read = true;
+        // one picture may keep a standing knot; a change is put to the vote of all of them
+        read = sameKnotReading(reading, candidate_);
       }
     }
     if (!read) {
@@ -73,7 +59,7 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
     }
 
     // a structure counts once it has been read confirmReadings times in a row
-    if (candidateCount_ > 0 && sameKnotStructure(reading, candidate_)) {
+    if (candidateCount_ > 0 && sameKnotReading(reading, candidate_)) {
       ++candidateCount_;
     } else {
       candidateCount_ = 1;
@@ -83,7 +69,7 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
     ++candidateCount_;  // a thread at rest reads as it did
   }
   if (candidateCount_ >= def_.confirmReadings) {
-    if (sameKnotStructure(candidate_, confirmed_)) {
+    if (sameKnotReading(candidate_, confirmed_)) {
       confirmed_ = candidate_;  // the same knot, where it is now
     } else {
       confirm(step, candidate_, tension);

@@ -148,6 +148,12 @@ inline std::function<Vec3(double)> curls(const Vec3& start) {
   };
 }
 
+/// `first`, then `rest`: a degenerate direction put ahead of the usual ones.
+inline std::vector<Vec3> withFirst(const Vec3& first, std::vector<Vec3> rest) {
+  rest.insert(rest.begin(), first);
+  return rest;
+}
+
 /// A random rigid motion, reproducible from `seed`.
 inline Eigen::Isometry3d randomRigidMotion(unsigned seed) {
   std::mt19937 rng(seed);

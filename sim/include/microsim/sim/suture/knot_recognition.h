@@ -3,10 +3,13 @@
 //
 // 1. Look. The thread (its node positions, the stitch's pierces as anchors) is projected along
 //    several directions fixed in its own principal frame (knot_diagram.h); each picture gives a
-//    Gauss word, simplified by RI and RII moves (knot_simplify.h). The clearest picture — no
+//    Gauss word, simplified by RI and RII moves (knot_simplify.h). Only clear pictures — no
 //    grazing crossings, no three strands through one point, no strand seen end-on, ends that
-//    leave the picture without crossing it — is kept. Near-degenerate directions are thereby
-//    passed over instead of read wrongly, and a rigid rotation of the thread changes nothing.
+//    leave the picture without crossing it — are read, and they vote: the reading most of them
+//    give wins (ties to the clearer picture); where some pictures are fully explained by the
+//    rules below, only those vote, since one RI and RII could not clear only needed RIII. Near-degenerate directions are thereby passed over
+//    instead of read wrongly; where one looks from changes how many half turns a twist and its
+//    tails show, the majority does not; and a rigid rotation of the thread changes nothing.
 // 2. The stitch. The stretch between the first and last anchor lies in the tissue; crossings
 //    with it are dropped. Around it, the two strands (needle side and tail side) can only twist:
 //    a crossing whose two passages have nothing but the anchors (and crossings already taken)
@@ -96,9 +99,13 @@ struct KnotReading {
 KnotReading readKnotDiagram(const Points& x, const KnotDiagram& diagram,
                             const KnotRecognitionDef& def = {});
 
-/// The knot in `x` (3 by m), held at the nodes `anchors` (may be empty), read from the clearest
-/// of def.directions. With `hint` (the direction of a previous reading), that picture is taken
-/// alone when it is at least def.clearQuality clear and its ends cross nothing.
+/// The knot in `x` (3 by m), held at the nodes `anchors` (may be empty): the reading most clear
+/// pictures from def.directions give (the clearest picture's when none is clear). With `hint`
+/// (the direction of a previous reading), that picture is taken alone when it is at least
+/// def.clearQuality clear and its ends cross nothing.
+/// The same throws (form, handedness, wraps), one for one, and the same name.
+bool sameKnotReading(const KnotReading& a, const KnotReading& b);
+
 KnotReading recogniseKnot(const Points& x, std::span<const int> anchors,
                           const KnotRecognitionDef& def = {}, const Vec3* hint = nullptr);
 
