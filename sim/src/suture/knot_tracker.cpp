@@ -77,7 +77,10 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
   }
 
   // tension: tightened, or sliding while held
-  if (!tight_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain) {
+  if (stretch < def_.tightStrain) {
+    slipped_ = false;  // the ends let go: a slipped knot may be pulled tight again
+  }
+  if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain) {
     KnotEvent e;
     e.kind = KnotEventKind::KnotTightened;
     e.step = step;
@@ -99,6 +102,7 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
       e.cause = KnotSlipCause::Sliding;
       events_.push_back(e);
       tight_.reset();
+      slipped_ = true;
     }
   }
   return {events_.data() + firstEvent, events_.size() - firstEvent};
@@ -128,6 +132,10 @@ void KnotTracker::confirm(int step, const KnotReading& reading, double tension) 
     if (lost || has > had) {
       tight_.reset();
     }
+    slipped_ = lost;
+  }
+  if (has > had) {
+    slipped_ = false;  // a new throw makes a new knot to tighten
   }
   for (std::size_t k = had; k < has; ++k) {
     KnotEvent e;

@@ -20,7 +20,8 @@
 //  - KnotSlipped: a tightened knot that lost throws or its type (StructureLost), or whose place
 //    along the thread moved by more than `slipDistance` while the tension stayed at or above
 //    the tension it was tightened with (Sliding: the thread running through the knot). A slipped
-//    knot may be tightened again.
+//    knot is tightened again once its ends have been let go (stretch below `tightStrain`) and
+//    pulled again, or once a new throw has been added.
 //
 // Units: millimetres, seconds, grams; tension in g·mm/s² (µN).
 
@@ -94,6 +95,7 @@ class KnotTracker {
   KnotReading candidate_;
   int candidateCount_ = 0;
   std::optional<Tight> tight_;
+  bool slipped_ = false;            // slipped, and the ends not let go since
   std::vector<double> arc_;         // arc length from node 0 to each node as last read (mm)
   std::vector<KnotEvent> events_;
   int readings_ = 0;
