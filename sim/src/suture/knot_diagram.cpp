@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace microsim::sim::suture {
 
@@ -93,76 +92,115 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
     segments.push_back({end, far, lift(far - end), above, above, static_cast<double>(m - 1), true});
   }
 
-  // sweep over the segments' extents along e1: only pairs that overlap there can cross
-  const std::size_t count = segments.size();
-  std::vector<std::size_t> order(count);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto low = [&](std::size_t s) { return std::min(segments[s].a.x(), segments[s].b.x()); };
-  const auto high = [&](std::size_t s) { return std::max(segments[s].a.x(), segments[s].b.x()); };
-  std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) {
-    return low(l) < low(r) || (low(l) == low(r) && l < r);
-  });
-  std::vector<std::size_t> active;
+  // one pair of segments: do their pictures cross, and how clearly
   std::vector<Vec2> points;  // where each crossing is in the picture
   double worst = 1.0;
-  for (const std::size_t s : order) {
-    const double from = low(s);
-    std::erase_if(active, [&](std::size_t t) { return high(t) < from; });
-    for (const std::size_t t : active) {
-      const std::size_t i = std::min(s, t);
-      const std::size_t j = std::max(s, t);
-      if (j == i + 1) {
-        continue;  // neighbours share a node
-      }
-      const DiagramSegment& si = segments[i];
-      const DiagramSegment& sj = segments[j];
-      const Vec2 r = si.b - si.a;
-      const Vec2 q = sj.b - sj.a;
-      const double denominator = crossOf(r, q);
-      const double scale = r.norm() * q.norm();
-      if (std::abs(denominator) <= 1e-14 * scale || scale == 0.0) {
-        // parallel pictures: overlapping ones hide which passes where
-        const Vec2 w = sj.a - si.a;
-        if (scale > 0.0 && std::abs(crossOf(w, r)) <= clearance * r.norm()) {
-          const double u0 = w.dot(r) / r.squaredNorm();
-          const double u1 = (sj.b - si.a).dot(r) / r.squaredNorm();
-          if (std::max(u0, u1) >= 0.0 && std::min(u0, u1) <= 1.0) {
-            worst = 0.0;
-          }
-        }
-        continue;
-      }
+  const auto testPair = [&](std::size_t i, std::size_t j) {
+    const DiagramSegment& si = segments[i];
+    const DiagramSegment& sj = segments[j];
+    const Vec2 r = si.b - si.a;
+    const Vec2 q = sj.b - sj.a;
+    const double denominator = crossOf(r, q);
+    const double scale = r.norm() * q.norm();
+    if (std::abs(denominator) <= 1e-14 * scale || scale == 0.0) {
+      // parallel pictures: overlapping ones hide which passes where
       const Vec2 w = sj.a - si.a;
-      const double ti = crossOf(w, q) / denominator;
-      const double tj = crossOf(w, r) / denominator;
-      if (ti < 0.0 || ti >= 1.0 || tj < 0.0 || tj >= 1.0) {
-        continue;
+      if (scale > 0.0 && std::abs(crossOf(w, r)) <= clearance * r.norm()) {
+        const double u0 = w.dot(r) / r.squaredNorm();
+        const double u1 = (sj.b - si.a).dot(r) / r.squaredNorm();
+        if (std::max(u0, u1) >= 0.0 && std::min(u0, u1) <= 1.0) {
+          worst = 0.0;
+        }
       }
-      const double depthI = si.depthA + ti * (si.depthB - si.depthA);
-      const double depthJ = sj.depthA + tj * (sj.depthB - sj.depthA);
-      const bool iOver = depthI >= depthJ;
-      const Vec3& over = iOver ? si.direction : sj.direction;
-      const Vec3& under = iOver ? sj.direction : si.direction;
-      KnotCrossing c;
-      c.overAt = iOver ? si.at + ti : sj.at + tj;
-      c.underAt = iOver ? sj.at + tj : si.at + ti;
-      c.sign = over.cross(under).dot(d) >= 0.0 ? 1 : -1;
-      c.withClosure = si.closure || sj.closure;
-      diagram.closureCrossings += c.withClosure ? 1 : 0;
-      diagram.crossings.push_back(c);
-      const Vec2 at = si.a + ti * r;
-      points.push_back(at);
+      return;
+    }
+    const Vec2 w = sj.a - si.a;
+    const double ti = crossOf(w, q) / denominator;
+    const double tj = crossOf(w, r) / denominator;
+    if (ti < 0.0 || ti >= 1.0 || tj < 0.0 || tj >= 1.0) {
+      return;
+    }
+    const double depthI = si.depthA + ti * (si.depthB - si.depthA);
+    const double depthJ = sj.depthA + tj * (sj.depthB - sj.depthA);
+    const bool iOver = depthI >= depthJ;
+    const Vec3& over = iOver ? si.direction : sj.direction;
+    const Vec3& under = iOver ? sj.direction : si.direction;
+    KnotCrossing c;
+    c.overAt = iOver ? si.at + ti : sj.at + tj;
+    c.underAt = iOver ? sj.at + tj : si.at + ti;
+    c.sign = over.cross(under).dot(d) >= 0.0 ? 1 : -1;
+    c.withClosure = si.closure || sj.closure;
+    diagram.closureCrossings += c.withClosure ? 1 : 0;
+    diagram.crossings.push_back(c);
+    const Vec2 at = si.a + ti * r;
+    points.push_back(at);
 
-      // margins: the angle, and the distance to either segment's ends
-      const double sinAngle = std::abs(denominator) / scale;
-      worst = std::min(worst, sinAngle / kDiagramTransverseSin);
-      if (!si.closure && !sj.closure) {
-        const double ends = std::min({ti * r.norm(), (1.0 - ti) * r.norm(), tj * q.norm(),
-                                      (1.0 - tj) * q.norm()});
-        worst = std::min(worst, ends / clearance);
+    // margins: the angle, and the distance to either segment's ends
+    const double sinAngle = std::abs(denominator) / scale;
+    worst = std::min(worst, sinAngle / kDiagramTransverseSin);
+    if (!si.closure && !sj.closure) {
+      const double ends = std::min({ti * r.norm(), (1.0 - ti) * r.norm(), tj * q.norm(),
+                                    (1.0 - tj) * q.norm()});
+      worst = std::min(worst, ends / clearance);
+    }
+  };
+
+  // candidate pairs from a grid of cells about two links wide: a link is filed under every
+  // cell its box touches, and a pair is tested in the first cell the two share, so the work
+  // follows the links and the crossings, not their square. The two extensions are long: each
+  // is tested against every link.
+  const std::size_t count = segments.size();
+  const std::size_t firstLink = 1;
+  const std::size_t lastLink = count - 2;
+  const double cell = 2.0 * std::max(meanLink, 1e-9);
+  struct CellRange {
+    long long x0, y0, x1, y1;
+  };
+  std::vector<CellRange> ranges(count);
+  std::vector<std::pair<long long, std::size_t>> filed;
+  filed.reserve(4 * count);
+  const auto cellOf = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
+  constexpr long long kCellRow = 1LL << 31;
+  for (std::size_t k = firstLink; k <= lastLink; ++k) {
+    const DiagramSegment& g = segments[k];
+    const CellRange r{cellOf(std::min(g.a.x(), g.b.x()) - centre.x()), cellOf(std::min(g.a.y(), g.b.y()) - centre.y()),
+                      cellOf(std::max(g.a.x(), g.b.x()) - centre.x()), cellOf(std::max(g.a.y(), g.b.y()) - centre.y())};
+    ranges[k] = r;
+    for (long long cx = r.x0; cx <= r.x1; ++cx) {
+      for (long long cy = r.y0; cy <= r.y1; ++cy) {
+        filed.emplace_back(cx * kCellRow + cy, k);
       }
     }
-    active.push_back(s);
+  }
+  std::sort(filed.begin(), filed.end());
+  for (std::size_t from = 0; from < filed.size();) {
+    std::size_t to = from + 1;
+    while (to < filed.size() && filed[to].first == filed[from].first) {
+      ++to;
+    }
+    for (std::size_t u = from; u < to; ++u) {
+      for (std::size_t v = u + 1; v < to; ++v) {
+        const std::size_t i = filed[u].second;
+        const std::size_t j = filed[v].second;
+        if (j == i + 1 || i == j + 1) {
+          continue;  // neighbours share a node
+        }
+        // the first cell both boxes share
+        const long long cx = std::max(ranges[i].x0, ranges[j].x0);
+        const long long cy = std::max(ranges[i].y0, ranges[j].y0);
+        if (cx * kCellRow + cy == filed[from].first) {
+          testPair(std::min(i, j), std::max(i, j));
+        }
+      }
+    }
+    from = to;
+  }
+  for (const std::size_t e : {std::size_t{0}, count - 1}) {
+    for (std::size_t k = firstLink; k <= lastLink; ++k) {
+      if (k + 1 != e && e + 1 != k) {
+        testPair(std::min(e, k), std::max(e, k));
+      }
+    }
   }
 
   // three strands through one point show as crossings on top of each other

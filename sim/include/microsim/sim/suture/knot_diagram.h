@@ -30,8 +30,9 @@
 // every crossing, each scaled so that 1 is comfortably clear; the recogniser (knot_recognition.h)
 // looks from several directions and keeps the clearest picture.
 //
-// Cost: a sweep over the segments' extents along the picture's x axis, so O(n log n) for n
-// links plus the pairs that overlap in x — the knot's own neighbourhood, not the whole thread.
+// Cost: a sweep over the segments' extents along the picture's long axis (its principal
+// direction), so O(n log n) for n links plus the pairs that overlap along it — the knot's own
+// neighbourhood, not the whole thread.
 //
 // Units: millimetres; curve parameters are segment index + fraction (the start's extension has
 // parameters in [−1, 0), the end's in [m − 1, m) for m nodes).
