@@ -8,6 +8,17 @@ namespace microsim::sim::suture {
 
 namespace {
 
+// an event about the knot `r` as it stands
+KnotEvent knotEventOf(KnotEventKind kind, int step, const KnotReading& r, double tension) {
+  KnotEvent e;
+  e.kind = kind;
+  e.step = step;
+  e.type = r.type;
+  e.throws = static_cast<int>(r.throws.size());
+  e.tension = tension;
+  return e;
+}
+
 bool isTieableKnot(const KnotReading& r) {
   return !r.throws.empty() && r.type != KnotType::None && r.type != KnotType::Unknown;
 }
@@ -81,23 +92,12 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
     slipped_ = false;  // the ends let go: a slipped knot may be pulled tight again
   }
   if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain) {
-    KnotEvent e;
-    e.kind = KnotEventKind::KnotTightened;
-    e.step = step;
-    e.type = confirmed_.type;
-    e.throws = static_cast<int>(confirmed_.throws.size());
-    e.tension = tension;
-    events_.push_back(e);
+    events_.push_back(knotEventOf(KnotEventKind::KnotTightened, step, confirmed_, tension));
     tight_ = Tight{place(confirmed_), tension};
   } else if (tight_ && isTieableKnot(confirmed_)) {
     const double slide = std::abs(place(confirmed_) - tight_->place);
     if (slide > def_.slipDistance && tension >= tight_->tension) {
-      KnotEvent e;
-      e.kind = KnotEventKind::KnotSlipped;
-      e.step = step;
-      e.type = confirmed_.type;
-      e.throws = static_cast<int>(confirmed_.throws.size());
-      e.tension = tension;
+      KnotEvent e = knotEventOf(KnotEventKind::KnotSlipped, step, confirmed_, tension);
       e.slide = slide;
       e.cause = KnotSlipCause::Sliding;
       events_.push_back(e);
@@ -119,12 +119,7 @@ void KnotTracker::confirm(int step, const KnotReading& reading, double tension) 
     const bool lost = has < had || reading.type == KnotType::None || reading.type == KnotType::Unknown ||
                       (reading.type == KnotType::SlipKnot && before.type != KnotType::SlipKnot);
     if (lost) {
-      KnotEvent e;
-      e.kind = KnotEventKind::KnotSlipped;
-      e.step = step;
-      e.type = reading.type;
-      e.throws = static_cast<int>(has);
-      e.tension = tension;
+      KnotEvent e = knotEventOf(KnotEventKind::KnotSlipped, step, reading, tension);
       e.slide = std::abs(place(reading) - tight_->place);
       e.cause = KnotSlipCause::StructureLost;
       events_.push_back(e);
@@ -138,15 +133,10 @@ void KnotTracker::confirm(int step, const KnotReading& reading, double tension) 
     slipped_ = false;  // a new throw makes a new knot to tighten
   }
   for (std::size_t k = had; k < has; ++k) {
-    KnotEvent e;
-    e.kind = KnotEventKind::ThrowFormed;
-    e.step = step;
-    e.type = reading.type;
-    e.throws = static_cast<int>(has);
+    KnotEvent e = knotEventOf(KnotEventKind::ThrowFormed, step, reading, tension);
     e.throwIndex = static_cast<int>(k);
     e.handedness = reading.throws[k].handedness;
     e.wraps = reading.throws[k].wraps;
-    e.tension = tension;
     events_.push_back(e);
   }
 }

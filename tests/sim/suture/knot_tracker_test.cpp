@@ -24,6 +24,15 @@ std::vector<KnotEvent> ofKind(const std::vector<KnotEvent>& events, KnotEventKin
   return out;
 }
 
+// a half knot round the stitch tied and pulled to 0.3 % stretch for four steps; the next step
+int tightenHalfKnot(KnotTracker& tracker) {
+  const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
+  for (int step = 0; step < 4; ++step) {
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  return 4;
+}
+
 // a half knot round the stitch, held still while its ends are pulled from 0 to 0.4 % stretch
 TEST(KnotTracker, ThrowFormsThenTightensOnce) {
   KnotTracker tracker;
@@ -49,13 +58,9 @@ TEST(KnotTracker, ThrowFormsThenTightensOnce) {
 }
 
 TEST(KnotTracker, AKnotPulledApartSlips) {
-  KnotTracker tracker;
-  int step = 0;
   // tied and pulled tight, then the tail strand unwinds from the needle strand
-  for (; step < 4; ++step) {
-    const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
-    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
-  }
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
   ASSERT_TRUE(tracker.tightened());
   for (int k = 1; k <= 10; ++k, ++step) {
     const ThreadBuilder b = knot_test::stitchTwist(1.0 - 0.1 * k, false);
@@ -72,11 +77,7 @@ TEST(KnotTracker, AKnotPulledApartSlips) {
 
 TEST(KnotTracker, AKnotWhoseThrowIsLostSlips) {
   KnotTracker tracker;
-  int step = 0;
-  for (; step < 4; ++step) {
-    const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
-    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
-  }
+  int step = tightenHalfKnot(tracker);
   ASSERT_TRUE(tracker.tightened());
   // the tail strand pulled out of the twist at once
   for (int k = 0; k < 3; ++k, ++step) {
@@ -94,11 +95,7 @@ TEST(KnotTracker, AKnotWhoseThrowIsLostSlips) {
 
 TEST(KnotTracker, ThrowsSlidingWhileTheTensionRisesSlip) {
   KnotTracker tracker;
-  int step = 0;
-  for (; step < 4; ++step) {
-    const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
-    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
-  }
+  int step = tightenHalfKnot(tracker);
   ASSERT_TRUE(tracker.tightened());
   // the thread runs through the knot (the twist moves 0.05 mm up the strands a step) while the
   // ends are pulled harder
@@ -116,11 +113,7 @@ TEST(KnotTracker, ThrowsSlidingWhileTheTensionRisesSlip) {
 
 TEST(KnotTracker, AKnotMovedAlongTheThreadWithItsEndsLetGoDoesNotSlip) {
   KnotTracker tracker;
-  int step = 0;
-  for (; step < 4; ++step) {
-    const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
-    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
-  }
+  int step = tightenHalfKnot(tracker);
   ASSERT_TRUE(tracker.tightened());
   // the same motion, the ends slack: that is the knot being laid, not slipping
   for (int k = 1; k <= 10; ++k, ++step) {
