@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
 
 namespace microsim::sim::suture {
 namespace {
@@ -187,6 +188,29 @@ TEST(KnotRecognition, RigidRotationsChangeNothing) {
       EXPECT_EQ(r.type, c.type) << c.name << " seed " << seed;
       EXPECT_EQ(throwsOf(r), c.throws) << c.name << " seed " << seed;
     }
+  }
+}
+
+TEST(KnotRecognition, JitterOfAFifthOfALinkChangesNothing) {
+  // every node moved by up to 0.01 mm (links are 0.05 mm) in a random direction
+  struct Case {
+    ThreadBuilder thread;
+    KnotType type;
+  };
+  const std::vector<Case> cases = {
+      {knot_test::throwsInARow({{1, true}, {1, false}}), KnotType::Square},
+      {knot_test::throwsInARow({{1, false}, {1, false}}), KnotType::Granny},
+      {knot_test::throwsInARow({{2, false}, {1, true}}), KnotType::Surgeons},
+      {knot_test::stitchTwist(1.0, true), KnotType::SingleThrow},
+  };
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const Case& c : cases) {
+    Points x = c.thread.points();
+    for (Eigen::Index i = 0; i < x.cols(); ++i) {
+      x.col(i) += 0.01 / std::sqrt(3.0) * Vec3(unit(rng), unit(rng), unit(rng));
+    }
+    EXPECT_EQ(recogniseKnot(x, c.thread.anchors()).type, c.type);
   }
 }
 
