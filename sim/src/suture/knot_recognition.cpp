@@ -36,8 +36,8 @@ double knotStraightness(const Points& x, double a, double b) {
   }
   double arc = 0.0;
   Vec3 previous = knotPointAt(x, a);
-  for (double s = std::floor(a) + 1.0; s < b; s += 1.0) {
-    const Vec3 p = knotPointAt(x, s);
+  for (auto i = static_cast<Eigen::Index>(std::floor(a)) + 1; static_cast<double>(i) < b; ++i) {
+    const Vec3 p = x.col(i);
     arc += (p - previous).norm();
     previous = p;
   }
