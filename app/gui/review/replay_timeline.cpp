@@ -142,7 +142,8 @@ QString ReplayTimeline::describe(const ReplayMark& mark) {
 
 void ReplayTimeline::paintEvent(QPaintEvent*) {
   QPainter p(this);
-  const QColor lane = palette().color(QPalette::AlternateBase);
+  // lanes a shade darker than the window, so that an empty one still reads as a lane
+  const QColor lane = palette().color(QPalette::Window).darker(108);
   for (ReplayLane l : kReplayLanes) {
     const QRect r = laneRect(l);
     p.fillRect(QRect(kTimelineMargin, r.top(), width() - 2 * kTimelineMargin, r.height()), lane);

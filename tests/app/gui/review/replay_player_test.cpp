@@ -17,14 +17,17 @@
 #include "microsim/sim/scene/scene.h"
 #include "support/shipped_files.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QHelpEvent>
 #include <QProgressBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QToolTip>
 
 #include <gtest/gtest.h>
 
@@ -220,8 +223,13 @@ TEST_F(ReplayOnReviewPage, PausesJumpsToThePierceStepsChangesSpeedAndScrubsBack)
   ASSERT_NE(firstPierce, marks.end());
   const int pierceAt = firstPierce->position;
   ASSERT_GT(pierceAt, 1);
-  EXPECT_FALSE(ReplayTimeline::describe(*firstPierce).isEmpty());
-  QTest::mouseClick(timeline, Qt::LeftButton, {}, timeline->markRect(int(firstPierce - marks.begin())).center());
+  // its tooltip names the first pass through a wall
+  const QPoint onMark = timeline->markRect(int(firstPierce - marks.begin())).center();
+  QHelpEvent hover(QEvent::ToolTip, onMark, timeline->mapToGlobal(onMark));
+  QApplication::sendEvent(timeline, &hover);
+  EXPECT_EQ(QToolTip::text(), ReplayTimeline::describe(*firstPierce));
+  EXPECT_TRUE(QToolTip::text().contains(ReplayTimeline::tr("Pierce %1: the needle enters the wall").arg(1)));
+  QTest::mouseClick(timeline, Qt::LeftButton, {}, onMark);
   ASSERT_TRUE(settlesAt(*player, pierceAt));
   EXPECT_EQ(controls->slider()->value(), pierceAt);
   EXPECT_EQ(player->runner()->latestSnapshot()->steps, pierceAt);
