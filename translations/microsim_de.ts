@@ -1186,6 +1186,10 @@
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>%n Bild wird abgespielt …</numerusform><numerusform>%n Bilder werden abgespielt …</numerusform></translation>
     </message>
+    <message>
+        <source>Paused.</source>
+        <translation>Angehalten.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::AttemptPage</name>

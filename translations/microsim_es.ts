@@ -1186,6 +1186,10 @@
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>Reproduciendo %n fotograma…</numerusform><numerusform>Reproduciendo %n fotogramas…</numerusform></translation>
     </message>
+    <message>
+        <source>Paused.</source>
+        <translation>En pausa.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::AttemptPage</name>

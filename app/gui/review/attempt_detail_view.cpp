@@ -233,6 +233,10 @@ bool AttemptDetailView::startReplay() {
     connect(player_, &ReplayPlayer::finished, this, [this] {
       replayStatus_->setText(tr("Replay finished: %n frame(s).", nullptr, player_->frameCount()));
     });
+    connect(player_, &ReplayPlayer::playingChanged, this, [this](bool playing) {
+      if (playing) replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+      else if (player_->target() < player_->frameCount()) replayStatus_->setText(tr("Paused."));
+    });
   }
   viewport_->setRunner(nullptr);
   controls_->recordingUnloaded();
@@ -245,7 +249,6 @@ bool AttemptDetailView::startReplay() {
   }
   viewport_->setRunner(player_->runner());
   controls_->recordingLoaded();
-  replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
   player_->play();
   return true;
 }

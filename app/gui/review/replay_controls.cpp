@@ -56,7 +56,7 @@ ReplayControls::ReplayControls(ReplayPlayer* player, QWidget* parent)
   speed_->setToolTip(tr("Playback speed"));
   const QLocale locale;
   for (double s : speeds()) speed_->addItem(tr("%1×").arg(locale.toString(s)), s);
-  speed_->setCurrentIndex(2);  // 1×
+  speed_->setCurrentIndex(speed_->findData(1.0));
   rerun_ = new QProgressBar;
   rerun_->setObjectName(QStringLiteral("replayRerun"));
   rerun_->setFormat(tr("Stepping from the start: %p%"));
