@@ -1129,10 +1129,6 @@
         <translation>In 3D abspielen</translation>
     </message>
     <message>
-        <source>To end</source>
-        <translation>Zum Ende</translation>
-    </message>
-    <message>
         <source>Choose an attempt in a trainee's history.</source>
         <translation>Wählen Sie einen Versuch im Verlauf eines Trainees.</translation>
     </message>
@@ -1189,6 +1185,10 @@
     <message numerus="yes">
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>%n Bild wird abgespielt …</numerusform><numerusform>%n Bilder werden abgespielt …</numerusform></translation>
+    </message>
+    <message>
+        <source>Paused.</source>
+        <translation>Angehalten.</translation>
     </message>
 </context>
 <context>
@@ -2175,6 +2175,136 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The fiducials lie on one line: spread them out.</source>
         <translation>Die Passermarken liegen auf einer Linie: verteilen Sie sie.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayControls</name>
+    <message>
+        <source>To the start (Home)</source>
+        <translation>Zum Anfang (Pos1)</translation>
+    </message>
+    <message>
+        <source>One frame back (Left)</source>
+        <translation>Ein Bild zurück (Links)</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>Abspielen (Leertaste)</translation>
+    </message>
+    <message>
+        <source>One frame on (Right)</source>
+        <translation>Ein Bild weiter (Rechts)</translation>
+    </message>
+    <message>
+        <source>To the end (End)</source>
+        <translation>Zum Ende (Ende)</translation>
+    </message>
+    <message>
+        <source>Replay position</source>
+        <translation>Position der Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Playback speed</source>
+        <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Stepping from the start: %p%</source>
+        <translation>Neu gerechnet vom Anfang: %p %</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>Anhalten (Leertaste)</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayTimeline</name>
+    <message>
+        <source>Pierces</source>
+        <translation>Durchstiche</translation>
+    </message>
+    <message>
+        <source>Grasps and releases</source>
+        <translation>Greifen und Loslassen</translation>
+    </message>
+    <message>
+        <source>Tissue: over-stretch, tears, cuts</source>
+        <translation>Gewebe: Überdehnung, Risse, Schnitte</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle enters the wall</source>
+        <translation>Durchstich %1: die Nadel tritt in die Wand ein</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle leaves the wall</source>
+        <translation>Durchstich %1: die Nadel tritt aus der Wand aus</translation>
+    </message>
+    <message>
+        <source>Grasp</source>
+        <translation>Greifen</translation>
+    </message>
+    <message>
+        <source>Release</source>
+        <translation>Loslassen</translation>
+    </message>
+    <message>
+        <source>Tissue over-stretched</source>
+        <translation>Gewebe überdehnt</translation>
+    </message>
+    <message>
+        <source>Tissue torn</source>
+        <translation>Gewebe gerissen</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Knot</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>The forceps closed on nothing</source>
+        <translation>Die Pinzette schloss sich ins Leere</translation>
+    </message>
+    <message>
+        <source>The suture broke</source>
+        <translation>Der Faden ist gerissen</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the suture slid out</source>
+        <translation>Durchstich %1: der Faden ist herausgerutscht</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle left it before the thread</source>
+        <translation>Durchstich %1: die Nadel verließ ihn vor dem Faden</translation>
+    </message>
+    <message>
+        <source>%1 (left hand), %2 s</source>
+        <translation>%1 (linke Hand), %2 s</translation>
+    </message>
+    <message>
+        <source>%1 (right hand), %2 s</source>
+        <translation>%1 (rechte Hand), %2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
     </message>
 </context>
 <context>

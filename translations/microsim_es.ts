@@ -1129,10 +1129,6 @@
         <translation>Reproducir en 3D</translation>
     </message>
     <message>
-        <source>To end</source>
-        <translation>Al final</translation>
-    </message>
-    <message>
         <source>Choose an attempt in a trainee's history.</source>
         <translation>Elija un intento en el historial de un residente.</translation>
     </message>
@@ -1189,6 +1185,10 @@
     <message numerus="yes">
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>Reproduciendo %n fotograma…</numerusform><numerusform>Reproduciendo %n fotogramas…</numerusform></translation>
+    </message>
+    <message>
+        <source>Paused.</source>
+        <translation>En pausa.</translation>
     </message>
 </context>
 <context>
@@ -2175,6 +2175,136 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The fiducials lie on one line: spread them out.</source>
         <translation>Los fiduciales están en una línea: sepárelos.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayControls</name>
+    <message>
+        <source>To the start (Home)</source>
+        <translation>Al inicio (Inicio)</translation>
+    </message>
+    <message>
+        <source>One frame back (Left)</source>
+        <translation>Un fotograma atrás (Izquierda)</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>Reproducir (Espacio)</translation>
+    </message>
+    <message>
+        <source>One frame on (Right)</source>
+        <translation>Un fotograma adelante (Derecha)</translation>
+    </message>
+    <message>
+        <source>To the end (End)</source>
+        <translation>Al final (Fin)</translation>
+    </message>
+    <message>
+        <source>Replay position</source>
+        <translation>Posición de la reproducción</translation>
+    </message>
+    <message>
+        <source>Playback speed</source>
+        <translation>Velocidad de reproducción</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Stepping from the start: %p%</source>
+        <translation>Recalculando desde el inicio: %p %</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>Pausa (Espacio)</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayTimeline</name>
+    <message>
+        <source>Pierces</source>
+        <translation>Punciones</translation>
+    </message>
+    <message>
+        <source>Grasps and releases</source>
+        <translation>Agarres y liberaciones</translation>
+    </message>
+    <message>
+        <source>Tissue: over-stretch, tears, cuts</source>
+        <translation>Tejido: sobreestiramiento, desgarros, cortes</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Nudos</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle enters the wall</source>
+        <translation>Punción %1: la aguja entra en la pared</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle leaves the wall</source>
+        <translation>Punción %1: la aguja sale de la pared</translation>
+    </message>
+    <message>
+        <source>Grasp</source>
+        <translation>Agarre</translation>
+    </message>
+    <message>
+        <source>Release</source>
+        <translation>Liberación</translation>
+    </message>
+    <message>
+        <source>Tissue over-stretched</source>
+        <translation>Tejido sobreestirado</translation>
+    </message>
+    <message>
+        <source>Tissue torn</source>
+        <translation>Tejido desgarrado</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Corte</translation>
+    </message>
+    <message>
+        <source>Knot</source>
+        <translation>Nudo</translation>
+    </message>
+    <message>
+        <source>The forceps closed on nothing</source>
+        <translation>La pinza se cerró sin agarrar nada</translation>
+    </message>
+    <message>
+        <source>The suture broke</source>
+        <translation>El hilo se rompió</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the suture slid out</source>
+        <translation>Punción %1: el hilo se salió</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle left it before the thread</source>
+        <translation>Punción %1: la aguja la dejó antes que el hilo</translation>
+    </message>
+    <message>
+        <source>%1 (left hand), %2 s</source>
+        <translation>%1 (mano izquierda), %2 s</translation>
+    </message>
+    <message>
+        <source>%1 (right hand), %2 s</source>
+        <translation>%1 (mano derecha), %2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 #include "gui/review/attempt_detail_view.h"
 
 #include "gui/metric_vocabulary.h"
+#include "gui/review/replay_controls.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_data.h"
 #include "gui/review/review_text.h"
@@ -85,25 +86,20 @@ AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
   leftLayout->addWidget(neverEvents_);
   leftLayout->addWidget(tabs, 1);
 
-  // the replay: the viewport is made on first use (it needs an OpenGL context)
+  // the replay: the viewport and the player's controls are made on first use (the viewport
+  // needs an OpenGL context)
   replayArea_ = new QWidget;
   auto* replayLayout = new QVBoxLayout(replayArea_);
   replayLayout->setContentsMargins(0, 0, 0, 0);
   replay_ = new QPushButton(tr("Replay in 3D"));
-  toEnd_ = new QPushButton(tr("To end"));
-  toEnd_->setEnabled(false);
   replayStatus_ = new QLabel;
   replayStatus_->setWordWrap(true);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(replay_);
-  buttons->addWidget(toEnd_);
   buttons->addWidget(replayStatus_, 1);
   replayLayout->addLayout(buttons);
   replayLayout->addStretch(1);
   connect(replay_, &QPushButton::clicked, this, &AttemptDetailView::startReplay);
-  connect(toEnd_, &QPushButton::clicked, this, [this] {
-    if (player_) player_->skipToEnd();
-  });
 
   auto* splitter = new QSplitter(Qt::Horizontal);
   splitter->addWidget(left);
@@ -137,7 +133,7 @@ void AttemptDetailView::clear() {
   addNote_->setEnabled(false);
   note_->setEnabled(false);
   replay_->setEnabled(false);
-  toEnd_->setEnabled(false);
+  if (controls_) controls_->recordingUnloaded();
   replayStatus_->clear();
 }
 
@@ -228,14 +224,22 @@ bool AttemptDetailView::startReplay() {
     player_ = new ReplayPlayer;
     viewport_ = new Viewport;
     viewport_->setMinimumSize(320, 240);
+    controls_ = new ReplayControls(player_);
+    controls_->addShortcuts(replayArea_);
     auto* layout = static_cast<QVBoxLayout*>(replayArea_->layout());
+    delete layout->takeAt(1);  // the stretch that kept the button at the top
     layout->insertWidget(1, viewport_, 1);
+    layout->insertWidget(2, controls_);
     connect(player_, &ReplayPlayer::finished, this, [this] {
-      toEnd_->setEnabled(false);
       replayStatus_->setText(tr("Replay finished: %n frame(s).", nullptr, player_->frameCount()));
+    });
+    connect(player_, &ReplayPlayer::playingChanged, this, [this](bool playing) {
+      if (playing) replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+      else if (player_->target() < player_->frameCount()) replayStatus_->setText(tr("Paused."));
     });
   }
   viewport_->setRunner(nullptr);
+  controls_->recordingUnloaded();
   const ReplayLoad loaded = player_->load(scenePath_, recording_);
   switch (loaded) {
     case ReplayLoad::Ok: break;
@@ -244,8 +248,7 @@ bool AttemptDetailView::startReplay() {
     case ReplayLoad::BadScene: replayStatus_->setText(tr("The lesson's scene could not be loaded.")); return false;
   }
   viewport_->setRunner(player_->runner());
-  toEnd_->setEnabled(true);
-  replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+  controls_->recordingLoaded();
   player_->play();
   return true;
 }
