@@ -1523,22 +1523,6 @@
         <translation>%1 ist zu niedrig.</translation>
     </message>
     <message>
-        <source>%1 µm</source>
-        <translation>%1 µm</translation>
-    </message>
-    <message>
-        <source>%1 mm</source>
-        <translation>%1 mm</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1°</source>
-        <translation>%1°</translation>
-    </message>
-    <message>
         <source>Pass each wall once: every extra passage injures it.</source>
         <translation>Jede Wand nur einmal durchstechen: jeder weitere Durchstich verletzt sie.</translation>
     </message>
@@ -2960,10 +2944,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>Stereo</translation>
     </message>
     <message>
-        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
-        <translation>Quad-Buffer weicht auf Anaglyphe aus, wo die Anzeige es nicht kann.</translation>
-    </message>
-    <message>
         <source>QWERTY / QWERTZ (W A S D, Q E)</source>
         <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
     </message>
@@ -3018,6 +2998,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The interface language.</source>
         <translation>Die Sprache der Oberfläche.</translation>
+    </message>
+    <message>
+        <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
+        <translation>Wie die beiden Augen des Mikroskops gezeigt werden. Quad-Buffer-Stereo wird nur angeboten, wo die Anzeige linke und rechte Puffer hat.</translation>
     </message>
 </context>
 <context>

@@ -1523,22 +1523,6 @@
         <translation>%1 es demasiado bajo.</translation>
     </message>
     <message>
-        <source>%1 µm</source>
-        <translation>%1 µm</translation>
-    </message>
-    <message>
-        <source>%1 mm</source>
-        <translation>%1 mm</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1°</source>
-        <translation>%1°</translation>
-    </message>
-    <message>
         <source>Pass each wall once: every extra passage injures it.</source>
         <translation>Atraviese cada pared una sola vez: cada paso de más la lesiona.</translation>
     </message>
@@ -2960,10 +2944,6 @@ Error RMS %7 mm, máximo %8 mm
         <translation>Estéreo</translation>
     </message>
     <message>
-        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
-        <translation>El cuádruple búfer pasa a anaglifo donde la pantalla no lo admite.</translation>
-    </message>
-    <message>
         <source>QWERTY / QWERTZ (W A S D, Q E)</source>
         <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
     </message>
@@ -3018,6 +2998,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The interface language.</source>
         <translation>El idioma de la interfaz.</translation>
+    </message>
+    <message>
+        <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
+        <translation>Cómo se muestran los dos ojos del microscopio. El estéreo de cuádruple búfer solo se ofrece donde la pantalla tiene búferes izquierdo y derecho.</translation>
     </message>
 </context>
 <context>

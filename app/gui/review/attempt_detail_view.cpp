@@ -1,6 +1,7 @@
 #include "gui/review/attempt_detail_view.h"
 
 #include "gui/metric_vocabulary.h"
+#include "gui/number_format.h"
 #include "gui/review/replay_controls.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_data.h"
@@ -30,6 +31,8 @@ QTableWidget* makeTable(const QStringList& headers) {
   table->setHorizontalHeaderLabels(headers);
   table->horizontalHeader()->setStretchLastSection(true);
   table->verticalHeader()->hide();
+  // rows as tall as their wrapped text at whatever width the splitter leaves
+  table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table->setSelectionBehavior(QAbstractItemView::SelectRows);
   return table;
@@ -174,11 +177,12 @@ void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
   for (int row = 0; row < detail.metrics.size(); ++row) {
     const assessment::StoredMetric& m = detail.metrics[row];
     set(metrics_, row, 0, MetricVocabulary::metricLabel(m.key));
-    set(metrics_, row, 1, ReviewText::value(m.value, m.unit, 2));
-    set(metrics_, row, 2, ReviewText::value(m.target, m.unit, 2));
-    set(metrics_, row, 3, QStringLiteral("± ") + ReviewText::value(m.tolerance, m.unit, 2));
+    const std::string unit = m.unit.toStdString();
+    set(metrics_, row, 1, NumberFormat::value(m.value, unit));
+    set(metrics_, row, 2, NumberFormat::value(m.target, unit));
+    set(metrics_, row, 3, QStringLiteral("± ") + NumberFormat::value(m.tolerance, unit));
     set(metrics_, row, 4, locale.toString(m.weight, 'g', 3));
-    set(metrics_, row, 5, locale.toString(100.0 * m.points, 'f', 0) + QStringLiteral(" %"));
+    set(metrics_, row, 5, NumberFormat::percent(m.points));
     set(metrics_, row, 6, ReviewText::feedback(m.feedback));
   }
   metrics_->resizeColumnsToContents();
@@ -192,7 +196,6 @@ void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
 void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
   const std::vector<PierceRow> rows = pierceRows(detail.pierces);
   pierces_->setRowCount(int(rows.size()));
-  const QLocale locale;
   for (int r = 0; r < int(rows.size()); ++r) {
     set(pierces_, r, 0, QString::number(rows[r].pierce + 1));
     int column = 1;
@@ -203,7 +206,7 @@ void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
         text = std::isnan(v) ? QStringLiteral("–") : (v > 0.5 ? tr("yes") : tr("no"));
       else
         // wall thicknesses are fractions near 2: one decimal would hide the difference
-        text = std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', field.unit == "1" ? 2 : 1);
+        text = NumberFormat::number(v, field.unit == "1" ? 2 : 1);
       set(pierces_, r, column++, text);
     }
   }
