@@ -58,7 +58,7 @@ TEST(ManualSource, KeysMoveTheActiveTipByTheDocumentedStepInTheView) {
   // R puts the tools back; unknown keys are not taken
   EXPECT_TRUE(source.handleKey(Qt::Key_R, Qt::NoModifier, true, false));
   EXPECT_EQ(lastFrame(frames).hands, start.hands);
-  EXPECT_FALSE(source.handleKey(Qt::Key_Z, Qt::NoModifier, true, false));
+  EXPECT_FALSE(source.handleKey(Qt::Key_P, Qt::NoModifier, true, false));
 }
 
 TEST(ManualSource, NothingIsEmittedWhenStopped) {
