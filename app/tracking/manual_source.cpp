@@ -69,7 +69,7 @@ void ManualSource::placeTools(const sim::SceneDef& def) {
     in.closure = 0.0;
     volume_.extend(in.position);
   }
-  const sim::Points& rest = def.tissue.model.restPositions();
+  const auto rest = def.tissue.model.restPositions();
   for (Eigen::Index i = 0; i < rest.cols(); ++i) volume_.extend(Eigen::Vector3d(rest.col(i)));
   if (def.needle) {
     // the needle where it lies, as far as it reaches from its frame's origin either way
