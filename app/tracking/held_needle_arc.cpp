@@ -38,19 +38,11 @@ std::optional<HeldNeedleArc> heldNeedleArc(const sim::RenderSnapshot& snapshot, 
   const Eigen::Vector3d tip = pose.translation();
   const Eigen::Vector3d heel = pose * Eigen::Vector3d(kHeldNeedleJawReachMm, 0.0, 0.0);
 
-  // the suture link nearest the jaws' axis is the one they hold
-  int nearest = -1;
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i + 1 < nodes; ++i) {
-    const auto link = static_cast<std::size_t>(i);
-    if (link < snapshot.sutureAlive.size() && snapshot.sutureAlive[link] == 0) continue;
-    const double d = sim::collide::closestSegmentSegment(sutureNode(snapshot, i), sutureNode(snapshot, i + 1), tip, heel).distance;
-    if (d < best) {
-      best = d;
-      nearest = i;
-    }
-  }
-  if (nearest < 0 || nearest + 1 >= needleNodes) return std::nullopt;  // the thread, not the needle
+  // a needle link on the jaws' axis: the grip holds the needle there, rigidly
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i + 1 < needleNodes; ++i)
+    nearest = std::min(nearest, sim::collide::closestSegmentSegment(sutureNode(snapshot, i), sutureNode(snapshot, i + 1), tip, heel).distance);
+  if (nearest > kHeldNeedleGapMm) return std::nullopt;  // the thread, not the needle
 
   const Eigen::Vector3d first = sutureNode(snapshot, 0);
   const Eigen::Vector3d second = sutureNode(snapshot, 1);

@@ -5,8 +5,9 @@
 // goes where the needle's body already is.
 //
 // Read from what is drawn (a RenderSnapshot): the hand holds the needle when its jaws hold
-// the suture and, of the suture's links, a needle link is the one nearest the jaws' axis
-// (the grasp takes the point nearest the line where the jaws meet: tools/jaw_grasp.h). The
+// the suture and a needle link lies on the jaws' axis, within kHeldNeedleGapMm (the grasp
+// takes the point nearest the line where the jaws meet: tools/jaw_grasp.h; the thread, which
+// may drape anywhere once the needle is in a wall, does not count). The
 // circle passes through the needle's tip, its middle node and its swage; a straight needle
 // has none. The circle is given in the tool frame of the same snapshot, so it stays right
 // however far the tool has moved since (the needle moves with the jaws).
@@ -34,6 +35,9 @@ struct HeldNeedleArc {
 /// How far along its axis (mm, from the tip toward the hinge) a tool's jaws are searched for
 /// the held link: longer than any shipped jaw.
 inline constexpr double kHeldNeedleJawReachMm = 5.0;
+/// How far from the jaws' axis (mm) a needle link may lie and still be the one they hold: the
+/// jaws' gripping faces are about this wide.
+inline constexpr double kHeldNeedleGapMm = 0.1;
 
 /// The circle of the needle `hand` holds in `snapshot`; null when that hand holds no needle
 /// or the needle is straight.

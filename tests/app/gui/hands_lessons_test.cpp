@@ -185,11 +185,11 @@ TEST(HandsLessons, LessonOneGrabAndStretchByMouseAndKeys) {
 }
 
 // Lesson 2: the left forceps (Tab) turned to point down, its tips 0.2 mm under the needle
-// (side view) and under its seventh of nine drawn nodes (top view), closed on it; the
+// (side view) and under its back end (top view), closed on it; the
 // needle stood up in the vessel's plane (↑: tilted 79°), turned along its own curve (X) until
 // its tip points down and forward, carried so that its tip is drawn where the circle through
-// the two marks starts (both views), then turned along its curve (X, one press at a time)
-// through the near end and out of the far end at the marks.
+// the two marks starts, 70° before its bottom (both views), then turned along its curve (X,
+// one press at a time, 130°) through the near end and out of the far end at the marks.
 TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   HandsApp app(1);
   app.view->setFocus();
@@ -199,16 +199,18 @@ TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   app.key(Qt::Key_1);
   app.key(Qt::Key_Left, Qt::NoModifier, 9);
 
-  // over the needle, its seventh node (of nine) between the jaws
+  // the needle between the jaws near its back end, between its last two drawn nodes (a grip
+  // far from the tip keeps the jaws above the walls to the end of the pass)
   const int needleNodes = app.drawn().needleNodes;
   ASSERT_EQ(needleNodes, 9);
+  const auto gripPoint = [&]() -> Eigen::Vector3d { return 0.5 * (app.needleNode(7) + app.needleNode(8)); };
   // (the height first: the top view's perspective is then right for where the needle lies)
   app.key(Qt::Key_3);
   const double pixelsPerMm = 1.0 / app.view->camera().mmPerPixel(app.view->height());
-  const auto underNeedle = [&] { return QPoint(tip().x(), app.onScreen(app.needleNode(7)).y() + qRound(0.2 * pixelsPerMm)); };
+  const auto underNeedle = [&] { return QPoint(tip().x(), app.onScreen(gripPoint()).y() + qRound(0.2 * pixelsPerMm)); };
   app.dragUntil(tip, underNeedle);
   app.key(Qt::Key_1);
-  app.dragUntil(tip, [&] { return app.onScreen(app.needleNode(7)); });
+  app.dragUntil(tip, [&] { return app.onScreen(gripPoint()); });
   app.key(Qt::Key_3);
   app.dragUntil(tip, underNeedle);
   app.rightClick();
@@ -246,17 +248,20 @@ TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   }
   EXPECT_LT((app.needleNode(0) - startPoint).norm(), 0.05);
 
-  // along its curve, 140°, a press at a time
-  app.key(Qt::Key_X, Qt::NoModifier, 70);
+  // along its curve, 130°, a press at a time: the tip through both walls and out
+  app.key(Qt::Key_X, Qt::NoModifier, 65);
   EXPECT_TRUE(QTest::qWaitFor([&] { return app.attempt->stepsDone() >= 2; }, 20000)) << "both marks hit";
   app.rightClick();  // let go
 
   const AttemptResult result = app.finish();
   ASSERT_TRUE(result.scored);
   EXPECT_EQ(app.attempt->stepsDone(), 2);
-  EXPECT_GE(result.pierces.size(), 4u);
+  EXPECT_EQ(result.pierces.size(), 4u) << "in and out of each end, once";
   RecordProperty("lesson2_score", std::to_string(result.score.score));
-  EXPECT_GE(result.score.score, 60.0);
+  // the marks lie where a 0.8 mm needle meets the wall at 51–58°: the angle metrics give
+  // nothing, everything else full points
+  EXPECT_TRUE(result.score.passed) << result.score.score;
+  EXPECT_GE(result.score.score, 70.0);
 }
 
 }  // namespace

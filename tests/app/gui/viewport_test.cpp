@@ -234,6 +234,14 @@ TEST(Viewport, KeysDriveTheManualSourceAndF1ShowsTheHelp) {
 
 Eigen::Vector3d viewportTestAxis(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
 
+// the tools placed on the fixture's scene and driven by `source`, through the drawn viewport
+void viewportTestDriveBy(Fixture& f, tracking::ManualSource& source) {
+  source.placeTools(*f.runner.sceneDef());
+  f.view->setManualSource(&source);
+  source.start();
+  f.draw();
+}
+
 // one wheel notch (positive: turned away from the user) with `modifiers`, at the centre
 void viewportTestWheel(QWidget* widget, int notches, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
   const QPointF at(widget->width() / 2.0, widget->height() / 2.0);
@@ -248,10 +256,7 @@ void viewportTestWheel(QWidget* widget, int notches, Qt::KeyboardModifiers modif
 TEST(Viewport, TheMouseMovesTheToolInTheViewAndInDepthAndWorksItsJaws) {
   Fixture f;
   tracking::ManualSource source;
-  source.placeTools(*f.runner.sceneDef());
-  f.view->setManualSource(&source);
-  source.start();
-  f.draw();
+  viewportTestDriveBy(f, source);
   MicroscopeCamera& camera = f.view->camera();
   const Eigen::Vector3d right = viewportTestAxis(camera.right());
   const Eigen::Vector3d up = viewportTestAxis(camera.up());
@@ -300,10 +305,7 @@ TEST(Viewport, TheMouseMovesTheToolInTheViewAndInDepthAndWorksItsJaws) {
 TEST(Viewport, HomeAndTheNumberKeysShowTheNamedViews) {
   Fixture f;
   tracking::ManualSource source;
-  source.placeTools(*f.runner.sceneDef());
-  f.view->setManualSource(&source);
-  source.start();
-  f.draw();
+  viewportTestDriveBy(f, source);
   f.view->setFocus();
   MicroscopeCamera& camera = f.view->camera();
   const QVector3D home = camera.eye();
