@@ -25,7 +25,6 @@
 #include <functional>
 #include <memory>
 #include <numbers>
-#include <optional>
 
 namespace microsim::gui {
 namespace {
