@@ -1762,6 +1762,30 @@
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Einstellungen gespeichert; der Löser gilt ab dem nächsten Versuch.</translation>
     </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Microscope view (reset)</source>
+        <translation>&amp;Mikroskopansicht (zurücksetzen)</translation>
+    </message>
+    <message>
+        <source>&amp;Top view</source>
+        <translation>Ansicht von &amp;oben</translation>
+    </message>
+    <message>
+        <source>&amp;Oblique view</source>
+        <translation>&amp;Schräge Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Side view</source>
+        <translation>Ansicht von der S&amp;eite</translation>
+    </message>
+    <message>
+        <source>&amp;Keys and mouse</source>
+        <translation>&amp;Tasten und Maus</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MetricVocabulary</name>
@@ -3043,16 +3067,44 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>R — Instrumente zurücksetzen</translation>
     </message>
     <message>
-        <source>Right drag — move the tool in the view plane</source>
-        <translation>Rechts ziehen — Instrument in der Bildebene bewegen</translation>
-    </message>
-    <message>
-        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
-        <translation>Links ziehen — umkreisen; Mitte oder Umschalt ziehen — verschieben; Rad — zoomen; Strg+Rad — fokussieren</translation>
-    </message>
-    <message>
         <source>F1 — show or hide this help</source>
         <translation>F1 — diese Hilfe ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Z / X — turn the held needle back / forward along its curve</source>
+        <translation>Z / X — gehaltene Nadel entlang ihrer Krümmung zurück / vorwärts drehen</translation>
+    </message>
+    <message>
+        <source>C / V — close / open the jaws a step</source>
+        <translation>C / V — Branchen schrittweise schließen / öffnen</translation>
+    </message>
+    <message>
+        <source>Left drag — move the tool in the view plane; wheel — move it in depth</source>
+        <translation>Links ziehen — Instrument in der Bildebene bewegen; Rad — in der Tiefe bewegen</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag or Ctrl + wheel — turn the held needle along its curve</source>
+        <translation>Strg + links ziehen oder Strg + Rad — gehaltene Nadel entlang ihrer Krümmung drehen</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag without a needle — turn the tool</source>
+        <translation>Strg + links ziehen ohne Nadel — Instrument drehen</translation>
+    </message>
+    <message>
+        <source>Right drag down / up — close / open the jaws; right click — close or open them</source>
+        <translation>Rechts nach unten / oben ziehen — Branchen schließen / öffnen; Rechtsklick — schließen oder öffnen</translation>
+    </message>
+    <message>
+        <source>Middle drag or Shift + left drag — orbit; Shift + middle drag — pan</source>
+        <translation>Mitte ziehen oder Umschalt + links ziehen — umkreisen; Umschalt + Mitte ziehen — verschieben</translation>
+    </message>
+    <message>
+        <source>Shift + wheel — zoom; Alt + wheel — focus</source>
+        <translation>Umschalt + Rad — zoomen; Alt + Rad — fokussieren</translation>
+    </message>
+    <message>
+        <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
+        <translation>Pos1 — Mikroskopansicht; 1 / 2 / 3 — Ansicht von oben / schräg / von der Seite</translation>
     </message>
 </context>
 </TS>

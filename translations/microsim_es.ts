@@ -1762,6 +1762,30 @@
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Ajustes guardados; el resolutor se aplica desde el próximo intento.</translation>
     </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>&amp;Microscope view (reset)</source>
+        <translation>Vista del &amp;microscopio (restablecer)</translation>
+    </message>
+    <message>
+        <source>&amp;Top view</source>
+        <translation>Vista &amp;superior</translation>
+    </message>
+    <message>
+        <source>&amp;Oblique view</source>
+        <translation>Vista &amp;oblicua</translation>
+    </message>
+    <message>
+        <source>&amp;Side view</source>
+        <translation>Vista &amp;lateral</translation>
+    </message>
+    <message>
+        <source>&amp;Keys and mouse</source>
+        <translation>&amp;Teclas y ratón</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MetricVocabulary</name>
@@ -3043,16 +3067,44 @@ Error RMS %7 mm, máximo %8 mm
         <translation>R — reiniciar los instrumentos</translation>
     </message>
     <message>
-        <source>Right drag — move the tool in the view plane</source>
-        <translation>Arrastrar con el botón derecho — mover el instrumento en el plano de la vista</translation>
-    </message>
-    <message>
-        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
-        <translation>Arrastrar con el izquierdo — orbitar; con el central o Mayús — desplazar; rueda — zoom; Ctrl+rueda — enfocar</translation>
-    </message>
-    <message>
         <source>F1 — show or hide this help</source>
         <translation>F1 — mostrar u ocultar esta ayuda</translation>
+    </message>
+    <message>
+        <source>Z / X — turn the held needle back / forward along its curve</source>
+        <translation>Z / X — girar la aguja sujeta hacia atrás / adelante a lo largo de su curva</translation>
+    </message>
+    <message>
+        <source>C / V — close / open the jaws a step</source>
+        <translation>C / V — cerrar / abrir las mandíbulas un paso</translation>
+    </message>
+    <message>
+        <source>Left drag — move the tool in the view plane; wheel — move it in depth</source>
+        <translation>Arrastrar con el botón izquierdo — mover el instrumento en el plano de la vista; rueda — moverlo en profundidad</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag or Ctrl + wheel — turn the held needle along its curve</source>
+        <translation>Ctrl + arrastrar con el izquierdo o Ctrl + rueda — girar la aguja sujeta a lo largo de su curva</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag without a needle — turn the tool</source>
+        <translation>Ctrl + arrastrar con el izquierdo sin aguja — girar el instrumento</translation>
+    </message>
+    <message>
+        <source>Right drag down / up — close / open the jaws; right click — close or open them</source>
+        <translation>Arrastrar con el derecho hacia abajo / arriba — cerrar / abrir las mandíbulas; clic derecho — cerrarlas o abrirlas</translation>
+    </message>
+    <message>
+        <source>Middle drag or Shift + left drag — orbit; Shift + middle drag — pan</source>
+        <translation>Arrastrar con el central o Mayús + arrastrar con el izquierdo — orbitar; Mayús + arrastrar con el central — desplazar</translation>
+    </message>
+    <message>
+        <source>Shift + wheel — zoom; Alt + wheel — focus</source>
+        <translation>Mayús + rueda — zoom; Alt + rueda — enfocar</translation>
+    </message>
+    <message>
+        <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
+        <translation>Inicio — vista del microscopio; 1 / 2 / 3 — vista superior / oblicua / lateral</translation>
     </message>
 </context>
 </TS>
