@@ -25,6 +25,8 @@ std::optional<ReplayMarkKind> markKindOf(sim::SceneEventKind kind) {
     case K::TissueOverStretch: return ReplayMarkKind::OverStretch;
     case K::TissueTear: return ReplayMarkKind::Tear;
     case K::GraspEmpty: return ReplayMarkKind::GraspEmpty;
+    case K::ThreadCut: return ReplayMarkKind::ThreadCut;
+    case K::ThreadTooShort: return ReplayMarkKind::ThreadTooShort;
   }
   return std::nullopt;
 }
@@ -45,7 +47,9 @@ ReplayLane laneOf(ReplayMarkKind kind) {
     case ReplayMarkKind::OverStretch:
     case ReplayMarkKind::Tear:
     case ReplayMarkKind::Cut: return ReplayLane::Tissue;
-    case ReplayMarkKind::Knot: return ReplayLane::Knots;
+    case ReplayMarkKind::Knot:
+    case ReplayMarkKind::ThreadCut: return ReplayLane::Knots;
+    case ReplayMarkKind::ThreadTooShort:
     case ReplayMarkKind::GraspEmpty:
     case ReplayMarkKind::SutureBreak:
     case ReplayMarkKind::SuturePulledOut:

@@ -23,6 +23,8 @@ enum class ReplayMarkKind {
   Tear,         ///< links torn
   Cut,          ///< the scalpel cut links
   Knot,         ///< a knot tied (no engine event yet)
+  ThreadCut,    ///< the scissors cut the thread
+  ThreadTooShort,  ///< a cut left the needle too little thread to tie
   GraspEmpty,   ///< a forceps closed on nothing
   SutureBreak,
   SuturePulledOut,

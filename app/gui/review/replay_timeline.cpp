@@ -97,6 +97,8 @@ QColor ReplayTimeline::colour(ReplayMarkKind kind) {
     case ReplayMarkKind::Tear: return {0xc6, 0x28, 0x28};
     case ReplayMarkKind::Cut: return {0x6d, 0x4c, 0x41};
     case ReplayMarkKind::Knot: return {0x7b, 0x1f, 0xa2};
+    case ReplayMarkKind::ThreadCut: return {0x45, 0x5a, 0x64};
+    case ReplayMarkKind::ThreadTooShort: return {0xbf, 0x36, 0x0c};
     case ReplayMarkKind::GraspEmpty: return {0xd8, 0x1b, 0x60};
     case ReplayMarkKind::SutureBreak: return {0xb7, 0x1c, 0x1c};
     case ReplayMarkKind::SuturePulledOut: return {0xad, 0x14, 0x57};
@@ -110,7 +112,7 @@ QString ReplayTimeline::laneName(ReplayLane lane) {
     case ReplayLane::Pierces: return tr("Pierces");
     case ReplayLane::Grasps: return tr("Grasps and releases");
     case ReplayLane::Tissue: return tr("Tissue: over-stretch, tears, cuts");
-    case ReplayLane::Knots: return tr("Knots");
+    case ReplayLane::Knots: return tr("Knots and thread cuts");
     case ReplayLane::Errors: return tr("Errors");
   }
   return {};
@@ -127,6 +129,8 @@ QString ReplayTimeline::describe(const ReplayMark& mark) {
     case ReplayMarkKind::Tear: what = tr("Tissue torn"); break;
     case ReplayMarkKind::Cut: what = tr("Cut"); break;
     case ReplayMarkKind::Knot: what = tr("Knot"); break;
+    case ReplayMarkKind::ThreadCut: what = tr("The scissors cut the thread"); break;
+    case ReplayMarkKind::ThreadTooShort: what = tr("The needle was left too little thread to tie"); break;
     case ReplayMarkKind::GraspEmpty: what = tr("The forceps closed on nothing"); break;
     case ReplayMarkKind::SutureBreak: what = tr("The suture broke"); break;
     case ReplayMarkKind::SuturePulledOut: what = tr("Pierce %1: the suture slid out").arg(mark.pierce + 1); break;
