@@ -1071,6 +1071,21 @@
     </message>
 </context>
 <context>
+    <name>microsim::gui::AddPersonDialog</name>
+    <message>
+        <source>Add a trainee</source>
+        <translation>Auszubildende(n) hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add an instructor</source>
+        <translation>Ausbilder(in) hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>microsim::gui::AttemptDetailView</name>
     <message>
         <source>Metric</source>
@@ -1629,6 +1644,25 @@
         <translation>Abmelden</translation>
     </message>
     <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lektionen für %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Ziele&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+    <message>
+        <source>My progress</source>
+        <translation>Mein Fortschritt</translation>
+    </message>
+    <message>
+        <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
+        <translation>Ihre Punktzahlen über Ihre Versuche, die Rückmeldung zu jedem Versuch und die Notizen Ihrer Ausbilder</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonStatusText</name>
+    <message>
         <source>not started</source>
         <translation>nicht begonnen</translation>
     </message>
@@ -1643,14 +1677,6 @@
     <message>
         <source>proficient</source>
         <translation>sicher beherrscht</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
-        <translation>&lt;h2&gt;Lektionen für %1&lt;/h2&gt;</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
-        <translation>&lt;b&gt;Ziele&lt;/b&gt;&lt;ul&gt;</translation>
     </message>
 </context>
 <context>
@@ -1777,6 +1803,26 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Einstellungen gespeichert; der Löser gilt ab dem nächsten Versuch.</translation>
+    </message>
+    <message>
+        <source>&amp;People</source>
+        <translation>&amp;Personen</translation>
+    </message>
+    <message>
+        <source>Add a &amp;trainee…</source>
+        <translation>&amp;Auszubildende(n) hinzufügen …</translation>
+    </message>
+    <message>
+        <source>Add an &amp;instructor…</source>
+        <translation>Ausb&amp;ilder(in) hinzufügen …</translation>
+    </message>
+    <message>
+        <source>Trainee %1 added.</source>
+        <translation>Auszubildende(r) %1 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>Instructor %1 added.</source>
+        <translation>Ausbilder(in) %1 hinzugefügt.</translation>
     </message>
 </context>
 <context>
@@ -1912,6 +1958,92 @@
     <message>
         <source>Fixed scene point (x, y, z):</source>
         <translation>Fester Szenenpunkt (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MyProgressPage</name>
+    <message>
+        <source>&lt;h2&gt;My progress&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Mein Fortschritt&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Zurück zu den Lektionen</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lektion:</translation>
+    </message>
+    <message>
+        <source>Scores</source>
+        <translation>Punktzahlen</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <source>Reading your history…</source>
+        <translation>Ihr Verlauf wird gelesen …</translation>
+    </message>
+    <message>
+        <source>Your history could not be read (%1).</source>
+        <translation>Ihr Verlauf konnte nicht gelesen werden (%1).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of these attempts carry an instructor's note: choose one to read it.</source>
+        <translation><numerusform>%n dieser Versuche trägt eine Notiz eines Ausbilders: wählen Sie ihn, um sie zu lesen.</numerusform><numerusform>%n dieser Versuche tragen eine Notiz eines Ausbilders: wählen Sie einen, um sie zu lesen.</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::NewPersonForm</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation><numerusform>mindestens %n Zeichen</numerusform><numerusform>mindestens %n Zeichen</numerusform></translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Passwort wiederholen</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Geben Sie zuerst einen Namen ein.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation><numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform><numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform></translation>
+    </message>
+    <message>
+        <source>The two passwords differ; type them again.</source>
+        <translation>Die beiden Passwörter unterscheiden sich; geben Sie sie erneut ein.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists.</source>
+        <translation>Eine Person namens %1 gibt es bereits.</translation>
+    </message>
+    <message>
+        <source>An instructor has been set up meanwhile; sign in as them.</source>
+        <translation>Inzwischen wurde ein(e) Ausbilder(in) eingerichtet; melden Sie sich als diese(r) an.</translation>
+    </message>
+    <message>
+        <source>%1 could not be added (%2).</source>
+        <translation>%1 konnte nicht hinzugefügt werden (%2).</translation>
     </message>
 </context>
 <context>
@@ -2685,6 +2817,14 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Unknown instructor or wrong password.</source>
         <translation>Unbekannte(r) Ausbilder(in) oder falsches Passwort.</translation>
+    </message>
+    <message>
+        <source>No instructor has been set up in this history yet. Create the first one: they can then add instructors and trainees.</source>
+        <translation>In diesem Verlauf ist noch kein(e) Ausbilder(in) eingerichtet. Legen Sie die erste Person an: sie kann dann Ausbilder und Auszubildende hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Create instructor and sign in</source>
+        <translation>Ausbilder(in) anlegen und anmelden</translation>
     </message>
 </context>
 <context>

@@ -1071,6 +1071,21 @@
     </message>
 </context>
 <context>
+    <name>microsim::gui::AddPersonDialog</name>
+    <message>
+        <source>Add a trainee</source>
+        <translation>Añadir un residente</translation>
+    </message>
+    <message>
+        <source>Add an instructor</source>
+        <translation>Añadir un instructor</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+</context>
+<context>
     <name>microsim::gui::AttemptDetailView</name>
     <message>
         <source>Metric</source>
@@ -1629,6 +1644,25 @@
         <translation>Salir</translation>
     </message>
     <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lecciones de %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Objetivos&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+    <message>
+        <source>My progress</source>
+        <translation>Mi progreso</translation>
+    </message>
+    <message>
+        <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
+        <translation>Sus puntuaciones a lo largo de sus intentos, la retroalimentación de cada intento y las notas de sus instructores</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonStatusText</name>
+    <message>
         <source>not started</source>
         <translation>sin empezar</translation>
     </message>
@@ -1643,14 +1677,6 @@
     <message>
         <source>proficient</source>
         <translation>dominada</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
-        <translation>&lt;h2&gt;Lecciones de %1&lt;/h2&gt;</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
-        <translation>&lt;b&gt;Objetivos&lt;/b&gt;&lt;ul&gt;</translation>
     </message>
 </context>
 <context>
@@ -1777,6 +1803,26 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Ajustes guardados; el resolutor se aplica desde el próximo intento.</translation>
+    </message>
+    <message>
+        <source>&amp;People</source>
+        <translation>&amp;Personas</translation>
+    </message>
+    <message>
+        <source>Add a &amp;trainee…</source>
+        <translation>Añadir un &amp;residente…</translation>
+    </message>
+    <message>
+        <source>Add an &amp;instructor…</source>
+        <translation>Añadir un &amp;instructor…</translation>
+    </message>
+    <message>
+        <source>Trainee %1 added.</source>
+        <translation>Residente %1 añadido.</translation>
+    </message>
+    <message>
+        <source>Instructor %1 added.</source>
+        <translation>Instructor %1 añadido.</translation>
     </message>
 </context>
 <context>
@@ -1912,6 +1958,92 @@
     <message>
         <source>Fixed scene point (x, y, z):</source>
         <translation>Punto fijo de la escena (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MyProgressPage</name>
+    <message>
+        <source>&lt;h2&gt;My progress&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Mi progreso&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Volver a las lecciones</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lección:</translation>
+    </message>
+    <message>
+        <source>Scores</source>
+        <translation>Puntuaciones</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Intento</translation>
+    </message>
+    <message>
+        <source>Reading your history…</source>
+        <translation>Leyendo su historial…</translation>
+    </message>
+    <message>
+        <source>Your history could not be read (%1).</source>
+        <translation>No se pudo leer su historial (%1).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of these attempts carry an instructor's note: choose one to read it.</source>
+        <translation><numerusform>%n de estos intentos tiene una nota de un instructor: elíjalo para leerla.</numerusform><numerusform>%n de estos intentos tienen una nota de un instructor: elija uno para leerla.</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::NewPersonForm</name>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Grupo</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation><numerusform>al menos %n carácter</numerusform><numerusform>al menos %n caracteres</numerusform></translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Repetir contraseña</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Escriba primero un nombre.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation><numerusform>La contraseña necesita al menos %n carácter.</numerusform><numerusform>La contraseña necesita al menos %n caracteres.</numerusform></translation>
+    </message>
+    <message>
+        <source>The two passwords differ; type them again.</source>
+        <translation>Las dos contraseñas no coinciden; escríbalas de nuevo.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists.</source>
+        <translation>Ya existe una persona llamada %1.</translation>
+    </message>
+    <message>
+        <source>An instructor has been set up meanwhile; sign in as them.</source>
+        <translation>Mientras tanto se ha creado un instructor; inicie sesión como él.</translation>
+    </message>
+    <message>
+        <source>%1 could not be added (%2).</source>
+        <translation>No se pudo añadir a %1 (%2).</translation>
     </message>
 </context>
 <context>
@@ -2685,6 +2817,14 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Unknown instructor or wrong password.</source>
         <translation>Instructor desconocido o contraseña incorrecta.</translation>
+    </message>
+    <message>
+        <source>No instructor has been set up in this history yet. Create the first one: they can then add instructors and trainees.</source>
+        <translation>Este historial aún no tiene ningún instructor. Cree el primero: después podrá añadir instructores y residentes.</translation>
+    </message>
+    <message>
+        <source>Create instructor and sign in</source>
+        <translation>Crear instructor e iniciar sesión</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,7 @@
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <optional>
@@ -62,6 +63,11 @@ MyProgressPage::MyProgressPage(QString historyLocation, QWidget* parent)
   });
   connect(lessonCombo_, &QComboBox::currentIndexChanged, this, &MyProgressPage::loadLesson);
   connect(loader_.get(), &TraineeProgressLoader::loaded, this, &MyProgressPage::showProgress);
+  // a selected attempt is shown in the Attempt tab; an activated one (double-click, Return) opens it
+  connect(historyView_->attemptsTable(), &QTableWidget::itemSelectionChanged, this, [this] {
+    const QList<QTableWidgetItem*> selected = historyView_->attemptsTable()->selectedItems();
+    if (!selected.isEmpty()) showAttempt(selected.first()->data(Qt::UserRole).toLongLong());
+  });
   connect(historyView_, &TraineeHistoryView::attemptChosen, this, [this](qint64 attemptId) {
     showAttempt(attemptId);
     tabs_->setCurrentWidget(detailView_);
