@@ -3,7 +3,9 @@
 #include "gui/app_settings.h"
 #include "gui/main_window.h"
 #include "gui/review/review_page.h"
+#include "gui/review/trainee_history_view.h"
 #include "gui/window_geometry.h"
+#include "support/stored_attempts.h"
 
 #include "microsim/assessment/storage/people_store.h"
 
@@ -81,7 +83,14 @@ TEST(WindowGeometry, ASavedGeometryLargerThanTheScreenIsFittedToIt) {
 TEST(WindowGeometry, TheReviewPageDoesNotGrowTheWindow) {
   WindowHistory h;
   ASSERT_TRUE(assessment::PeopleStore(h.history).addInstructor(QStringLiteral("Dr Grey"), QStringLiteral("correct horse")));
-  ASSERT_TRUE(assessment::PeopleStore(h.history).addTrainee(QStringLiteral("Ana")));
+  const qint64 ana = assessment::PeopleStore(h.history).addTrainee(QStringLiteral("Ana")).value_or(0);
+  ASSERT_NE(ana, 0);
+  // finished attempts with metrics: the history tab then shows the score and key-metric charts
+  const QString lesson = QStringLiteral("02_needle_entry");
+  const assessment::Rubric rubric = testing::shippedLessonRubric(lesson);
+  for (double angle : {30.0, 10.0})
+    testing::storeFinishedAttempt(h.history, ana, lesson, assessment::AttemptMode::Test,
+                                  testing::scoreOnRubric(rubric, {{"entry_angle", angle}}));
   MainWindow window(&h.history, {}, h.path);
   // a window that fits a 1280×800 screen with its panels and title bar
   const QSize small(1000, 640);
@@ -93,7 +102,8 @@ TEST(WindowGeometry, TheReviewPageDoesNotGrowTheWindow) {
   window.findChild<QPushButton*>(QStringLiteral("instructorSignInButton"))->click();
   ASSERT_NE(window.reviewPage(), nullptr);
   ASSERT_EQ(window.currentPage(), window.reviewPage());
-  window.reviewPage()->showTrainee(window.reviewPage()->shownTrainees().value(0).id);  // the charts' tab
+  window.reviewPage()->showTrainee(ana, lesson);  // the charts' tab
+  ASSERT_FALSE(window.reviewPage()->historyView()->metricCharts().isEmpty());
   QCoreApplication::processEvents();
   EXPECT_LE(window.minimumSizeHint().height(), small.height());
   EXPECT_LE(window.minimumSizeHint().width(), small.width());
