@@ -5,6 +5,7 @@
 
 #include "microsim/assessment/scoring/rubric.h"
 
+#include <QChartView>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -15,6 +16,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <variant>
@@ -42,6 +44,8 @@ MyProgressPage::MyProgressPage(QString historyLocation, QWidget* parent)
 
   // the charts need more height than a small screen has: they scroll instead of growing the window
   historyView_ = new TraineeHistoryView;
+  // the score chart keeps room for its title, legend and axis labels when the page scrolls
+  historyView_->scoreChartView()->setMinimumHeight(320);
   auto* historyScroll = new QScrollArea;
   historyScroll->setWidgetResizable(true);
   historyScroll->setFrameShape(QFrame::NoFrame);

@@ -4,7 +4,6 @@
 #include "gui/main_window.h"
 #include "gui/pages/lesson_list_page.h"
 #include "gui/pages/my_progress_page.h"
-#include "gui/pages/sign_in_page.h"
 #include "gui/review/attempt_detail_view.h"
 #include "gui/review/review_charts.h"
 #include "gui/review/trainee_history_view.h"
