@@ -2,7 +2,9 @@
 
 #include "gui/app_settings.h"
 #include "gui/calibration/calibration_menu.h"
+#include "gui/pages/add_person_dialog.h"
 #include "gui/pages/lesson_list_page.h"
+#include "gui/pages/my_progress_page.h"
 #include "gui/pages/results_page.h"
 #include "gui/pages/sign_in_page.h"
 #include "gui/review/review_page.h"
@@ -10,6 +12,7 @@
 #include "gui/settings/tunables.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
+#include "gui/window_geometry.h"
 #include "i18n/translations.h"
 
 #include "microsim/sim/scene/recording.h"
@@ -20,6 +23,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -37,8 +41,16 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   lessonList_ = new LessonListPage(history_, pages_);
   attempt_ = new AttemptPage(history_, pages_);
   results_ = new ResultsPage(pages_);
-  for (QWidget* page : std::initializer_list<QWidget*>{signIn_, lessonList_, attempt_, results_}) pages_->addWidget(page);
-  setCentralWidget(pages_);
+  progress_ = new MyProgressPage(history_ && history_->isOpen() ? history_->location() : QString(), pages_);
+  for (QWidget* page : std::initializer_list<QWidget*>{signIn_, lessonList_, attempt_, results_, progress_})
+    pages_->addWidget(page);
+  // a page that needs more room than the screen has scrolls instead of growing the window
+  // past the screen (and having that size saved and restored)
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(pages_);
+  setCentralWidget(scroll);
 
   std::vector<lesson::LessonError> errors;
   lessons_ = lesson::loadLessons(lesson::lessonsDirectory(), &errors);
@@ -54,6 +66,7 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   connect(signIn_, &SignInPage::signedIn, this, [this](const assessment::Viewer& viewer, const QString& name) {
     viewer_ = viewer;
     userName_ = name;
+    updatePeopleMenu();
     userLabel_->setText(viewer.role == assessment::Role::Instructor ? tr("Instructor: %1").arg(name)
                                                                      : tr("Trainee: %1").arg(name));
     if (viewer.role == assessment::Role::Instructor && history_ && history_->isOpen()) {
@@ -64,6 +77,8 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   });
   connect(lessonList_, &LessonListPage::startLesson, this, &MainWindow::startLesson);
   connect(lessonList_, &LessonListPage::signOut, this, &MainWindow::signOut);
+  connect(lessonList_, &LessonListPage::showProgress, this, &MainWindow::showProgress);
+  connect(progress_, &MyProgressPage::back, this, &MainWindow::showLessons);
   connect(attempt_, &AttemptPage::finished, this, &MainWindow::showResults);
   connect(attempt_, &AttemptPage::abandoned, this, &MainWindow::showLessons);
   connect(results_, &ResultsPage::retry, this, [this] { startLesson(lastLesson_, lastMode_); });
@@ -81,6 +96,7 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   QSettings settings;
   restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());
   restoreState(settings.value(settings::windowState()).toByteArray());
+  fitToScreen(*this);
 }
 
 MainWindow::~MainWindow() = default;
@@ -98,6 +114,7 @@ void MainWindow::signOut() {
   viewer_ = {};
   userName_.clear();
   userLabel_->clear();
+  updatePeopleMenu();
   if (review_) {
     pages_->removeWidget(review_);
     review_->deleteLater();
@@ -164,6 +181,15 @@ void MainWindow::buildMenus() {
   keys->setShortcut(QKeySequence(Qt::Key_F1));
   keys->setObjectName(QStringLiteral("keyMapAction"));
 
+  // instructors add people here (trainees also create themselves at sign-in)
+  peopleMenu_ = menuBar()->addMenu(tr("&People"));
+  QAction* addTrainee = peopleMenu_->addAction(tr("Add a &trainee…"), this, [this] { addPerson(assessment::Role::Trainee); });
+  addTrainee->setObjectName(QStringLiteral("addTraineeAction"));
+  QAction* addInstructor =
+      peopleMenu_->addAction(tr("Add an &instructor…"), this, [this] { addPerson(assessment::Role::Instructor); });
+  addInstructor->setObjectName(QStringLiteral("addInstructorAction"));
+  updatePeopleMenu();
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About microsim"), this, &MainWindow::showAbout);
 }
@@ -172,6 +198,26 @@ void MainWindow::showLessons() {
   attempt_->stop();
   lessonList_->show(lessons_, viewer_, userName_, language());
   pages_->setCurrentWidget(lessonList_);
+}
+
+void MainWindow::showProgress(const QString& lessonId) {
+  progress_->open(lessons_, viewer_, userName_, lessonId, language());
+  pages_->setCurrentWidget(progress_);
+}
+
+void MainWindow::updatePeopleMenu() {
+  const bool instructor = viewer_.role == assessment::Role::Instructor && viewer_.userId != 0;
+  for (QAction* action : peopleMenu_->actions()) action->setEnabled(instructor);
+}
+
+void MainWindow::addPerson(assessment::Role role) {
+  if (viewer_.role != assessment::Role::Instructor || !history_ || !history_->isOpen()) return;
+  AddPersonDialog dialog(role, *history_, this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  statusBar()->showMessage(role == assessment::Role::Trainee ? tr("Trainee %1 added.").arg(dialog.addedName())
+                                                             : tr("Instructor %1 added.").arg(dialog.addedName()),
+                           5000);
+  if (review_) review_->refresh();
 }
 
 bool MainWindow::startLesson(int index, assessment::AttemptMode mode) {

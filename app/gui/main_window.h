@@ -1,8 +1,11 @@
 #pragma once
 // The main window: a stack of pages — sign-in, the lesson list, an attempt (the microscope
-// viewport with the lesson's steps), and its results — with menus (settings, language, the
-// microscope's named views and the key and mouse map) and a status bar that says where the trainee history is kept (or why it could
-// not be opened).
+// viewport with the lesson's steps), its results, a trainee's own progress and an
+// instructor's review — with menus (settings, language, the microscope's named views and the
+// key and mouse map, People for instructors to add trainees and instructors) and a status bar
+// that says where the trainee history is kept (or why it could not be opened). The pages sit in
+// a scroll area, so none can grow the window past the screen, and a restored geometry is fitted
+// to the screen (window_geometry.h).
 //
 // Closing the window during an attempt stops the simulation and leaves the attempt unfinished
 // in the history (in progress, marked interrupted when the history is next opened); its
@@ -19,12 +22,14 @@
 #include <vector>
 
 class QLabel;
+class QMenu;
 class QStackedWidget;
 
 namespace microsim::gui {
 
 class CalibrationSession;
 class LessonListPage;
+class MyProgressPage;
 class ReviewPage;
 class ResultsPage;
 class SignInPage;
@@ -45,6 +50,7 @@ class MainWindow : public QMainWindow {
   LessonListPage* lessonListPage() const { return lessonList_; }
   AttemptPage* attemptPage() const { return attempt_; }
   ResultsPage* resultsPage() const { return results_; }
+  MyProgressPage* progressPage() const { return progress_; }
   /// The instructor's review, while an instructor is signed in; null otherwise.
   ReviewPage* reviewPage() const { return review_; }
   CalibrationSession* calibration() const { return calibration_; }
@@ -73,7 +79,11 @@ class MainWindow : public QMainWindow {
   QString language() const;
 
   void showReview();
+  void showProgress(const QString& lessonId);
   void signOut();
+  /// Enables the People menu for a signed-in instructor only.
+  void updatePeopleMenu();
+  void addPerson(assessment::Role role);
 
   assessment::HistoryDatabase* history_;
   ReviewPage* review_ = nullptr;
@@ -83,6 +93,8 @@ class MainWindow : public QMainWindow {
   LessonListPage* lessonList_ = nullptr;
   AttemptPage* attempt_ = nullptr;
   ResultsPage* results_ = nullptr;
+  MyProgressPage* progress_ = nullptr;
+  QMenu* peopleMenu_ = nullptr;
   QLabel* databaseLabel_ = nullptr;
   QLabel* userLabel_ = nullptr;
 

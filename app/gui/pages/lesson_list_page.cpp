@@ -34,9 +34,13 @@ LessonListPage::LessonListPage(assessment::HistoryDatabase* history, QWidget* pa
   test_->setObjectName(QStringLiteral("testButton"));
   auto* signOut = new QPushButton(tr("Sign out"), this);
   signOut->setObjectName(QStringLiteral("signOutButton"));
+  progress_ = new QPushButton(tr("My progress"), this);
+  progress_->setObjectName(QStringLiteral("myProgressButton"));
+  progress_->setToolTip(tr("Your scores over your attempts, each attempt's feedback and your instructors' notes"));
 
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(signOut);
+  buttons->addWidget(progress_);
   buttons->addStretch(1);
   buttons->addWidget(learn_);
   buttons->addWidget(test_);
@@ -51,16 +55,10 @@ LessonListPage::LessonListPage(assessment::HistoryDatabase* history, QWidget* pa
   connect(learn_, &QPushButton::clicked, this, [this] { start(assessment::AttemptMode::Learn); });
   connect(test_, &QPushButton::clicked, this, [this] { start(assessment::AttemptMode::Test); });
   connect(signOut, &QPushButton::clicked, this, &LessonListPage::signOut);
-}
-
-QString LessonListPage::describe(LessonStatus status) {
-  switch (status) {
-    case LessonStatus::NotStarted: return tr("not started");
-    case LessonStatus::Practised: return tr("practised");
-    case LessonStatus::Passed: return tr("passed");
-    case LessonStatus::Proficient: return tr("proficient");
-  }
-  return {};
+  connect(progress_, &QPushButton::clicked, this, [this] {
+    const int row = selectedRow();
+    Q_EMIT showProgress(row >= 0 ? lessons_[static_cast<std::size_t>(row)].id : QString());
+  });
 }
 
 void LessonListPage::show(const std::vector<lesson::Lesson>& lessons, const assessment::Viewer& viewer,
@@ -69,9 +67,11 @@ void LessonListPage::show(const std::vector<lesson::Lesson>& lessons, const asse
   lessons_ = lessons;
   language_ = language;
   heading_->setText(tr("<h2>Lessons for %1</h2>").arg(name.toHtmlEscaped()));
+  const bool stored = history_ && history_->isOpen() && viewer.userId != 0;
   QList<assessment::AttemptSummary> attempts;
-  if (history_ && history_->isOpen() && viewer.userId != 0)
-    attempts = assessment::AttemptStore(*history_).list(viewer, viewer.userId);
+  if (stored) attempts = assessment::AttemptStore(*history_).list(viewer, viewer.userId);
+  // a guest's attempts are not stored: there is no progress to show
+  progress_->setEnabled(stored);
 
   statuses_.clear();
   table_->setRowCount(static_cast<int>(lessons_.size()));
@@ -79,18 +79,19 @@ void LessonListPage::show(const std::vector<lesson::Lesson>& lessons, const asse
     const lesson::Lesson& l = lessons_[i];
     const auto rubric = assessment::loadRubric(l.rubricPath.toStdString());
     const assessment::Rubric* r = std::get_if<assessment::Rubric>(&rubric);
-    const LessonStatus status = r ? lessonStatus(attempts, l.id, *r)
-                                  : (attempts.isEmpty() ? LessonStatus::NotStarted : LessonStatus::Practised);
+    const LessonStatus status = lessonStatus(attempts, viewer.userId, l.id, r);
     statuses_.push_back(status);
     const int row = static_cast<int>(i);
     table_->setItem(row, 0, new QTableWidgetItem(l.title.in(language_)));
-    auto* statusItem = new QTableWidgetItem(describe(status));
+    auto* statusItem = new QTableWidgetItem(LessonStatusText::word(status));
     if (status == LessonStatus::Passed || status == LessonStatus::Proficient)
       statusItem->setForeground(QColor(0x1b, 0x7f, 0x3a));
     table_->setItem(row, 1, statusItem);
   }
   selectRow(previous >= 0 && previous < table_->rowCount() ? previous : 0);
 }
+
+QString LessonListPage::statusText(int row) const { return table_->item(row, 1)->text(); }
 
 int LessonListPage::selectedRow() const {
   const QList<QTableWidgetItem*> selected = table_->selectedItems();

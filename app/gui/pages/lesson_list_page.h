@@ -1,6 +1,7 @@
 #pragma once
 // The lessons for the signed-in person: title, goals, and their status in each (lesson_status.h),
-// with Learn (guided) and Test (graded, no hints) buttons.
+// with Learn (guided) and Test (graded, no hints) buttons, and "My progress" (their own
+// history, my_progress_page.h) for a person whose attempts are stored.
 
 #include "gui/pages/lesson_status.h"
 #include "lesson/lesson.h"
@@ -28,14 +29,16 @@ class LessonListPage : public QWidget {
             const QString& name, const QString& language);
   /// The status shown in row `row` (for tests).
   LessonStatus status(int row) const { return statuses_.at(static_cast<std::size_t>(row)); }
+  /// The word shown in row `row`'s status column.
+  QString statusText(int row) const;
   int selectedRow() const;
   void selectRow(int row);
-
-  static QString describe(LessonStatus status);
 
  Q_SIGNALS:
   void startLesson(int index, microsim::assessment::AttemptMode mode);
   void signOut();
+  /// "My progress", opened on `lessonId` (the selected lesson; empty: none selected).
+  void showProgress(const QString& lessonId);
 
  private:
   void showGoals();
@@ -50,6 +53,7 @@ class LessonListPage : public QWidget {
   QLabel* goals_ = nullptr;
   QPushButton* learn_ = nullptr;
   QPushButton* test_ = nullptr;
+  QPushButton* progress_ = nullptr;
 };
 
 }  // namespace microsim::gui

@@ -1,5 +1,7 @@
 #include "gui/pages/sign_in_page.h"
 
+#include "gui/pages/new_person_form.h"
+
 #include "microsim/assessment/storage/people_store.h"
 
 #include <QFormLayout>
@@ -9,6 +11,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 
 namespace microsim::gui {
@@ -42,19 +45,41 @@ SignInPage::SignInPage(assessment::HistoryDatabase* history, QWidget* parent)
   traineeLayout->addWidget(new QLabel(tr("New trainee:"), traineeBox));
   traineeLayout->addLayout(newRow);
 
-  // instructors
+  // instructors: sign in, or, in a history without any, create the first one
   auto* instructorBox = new QGroupBox(tr("Instructor"), this);
-  instructorName_ = new QLineEdit(instructorBox);
+  instructorStack_ = new QStackedWidget(instructorBox);
+  auto* signInForm = new QWidget(instructorStack_);
+  instructorName_ = new QLineEdit(signInForm);
   instructorName_->setObjectName(QStringLiteral("instructorName"));
-  password_ = new QLineEdit(instructorBox);
+  password_ = new QLineEdit(signInForm);
   password_->setObjectName(QStringLiteral("instructorPassword"));
   password_->setEchoMode(QLineEdit::Password);
-  auto* instructorSignIn = new QPushButton(tr("Sign in as instructor"), instructorBox);
+  auto* instructorSignIn = new QPushButton(tr("Sign in as instructor"), signInForm);
   instructorSignIn->setObjectName(QStringLiteral("instructorSignInButton"));
-  auto* form = new QFormLayout(instructorBox);
+  auto* form = new QFormLayout(signInForm);
+  form->setContentsMargins(0, 0, 0, 0);
   form->addRow(tr("Name"), instructorName_);
   form->addRow(tr("Password"), password_);
   form->addRow(instructorSignIn);
+
+  auto* firstRun = new QWidget(instructorStack_);
+  firstRun->setObjectName(QStringLiteral("firstInstructorForm"));
+  auto* firstRunText = new QLabel(tr("No instructor has been set up in this history yet. Create the first one: "
+                                     "they can then add instructors and trainees."),
+                                  firstRun);
+  firstRunText->setWordWrap(true);
+  firstInstructor_ = new NewPersonForm(assessment::Role::Instructor, firstRun);
+  auto* createInstructor = new QPushButton(tr("Create instructor and sign in"), firstRun);
+  createInstructor->setObjectName(QStringLiteral("createFirstInstructorButton"));
+  auto* firstRunLayout = new QVBoxLayout(firstRun);
+  firstRunLayout->setContentsMargins(0, 0, 0, 0);
+  firstRunLayout->addWidget(firstRunText);
+  firstRunLayout->addWidget(firstInstructor_);
+  firstRunLayout->addWidget(createInstructor);
+  instructorStack_->addWidget(signInForm);
+  instructorStack_->addWidget(firstRun);
+  auto* instructorLayout = new QVBoxLayout(instructorBox);
+  instructorLayout->addWidget(instructorStack_);
 
   message_ = new QLabel(this);
   message_->setObjectName(QStringLiteral("signInMessage"));
@@ -76,6 +101,8 @@ SignInPage::SignInPage(assessment::HistoryDatabase* history, QWidget* parent)
   connect(newName_, &QLineEdit::returnPressed, this, &SignInPage::createTrainee);
   connect(instructorSignIn, &QPushButton::clicked, this, &SignInPage::signInInstructor);
   connect(password_, &QLineEdit::returnPressed, this, &SignInPage::signInInstructor);
+  connect(createInstructor, &QPushButton::clicked, this, &SignInPage::createFirstInstructor);
+  connect(firstInstructor_, &NewPersonForm::submitted, this, &SignInPage::createFirstInstructor);
   refresh();
 }
 
@@ -83,6 +110,8 @@ void SignInPage::refresh() {
   trainees_->clear();
   message_->clear();
   password_->clear();
+  firstInstructor_->clear();
+  instructorStack_->setCurrentIndex(0);
   if (!history_ || !history_->isOpen()) {
     showError(tr("The history is unavailable: you can practise, but nothing will be stored."));
     auto* guest = new QListWidgetItem(tr("Guest"), trainees_);
@@ -90,7 +119,9 @@ void SignInPage::refresh() {
     trainees_->setCurrentRow(0);
     return;
   }
+  bool anyInstructor = false;
   for (const assessment::Trainee& t : assessment::PeopleStore(*history_).trainees()) {
+    anyInstructor = anyInstructor || t.role == Role::Instructor;
     if (t.role != Role::Trainee) continue;
     const QString text = t.group.isEmpty() ? t.name : tr("%1 (%2)").arg(t.name, t.group);
     auto* item = new QListWidgetItem(text, trainees_);
@@ -98,7 +129,10 @@ void SignInPage::refresh() {
     item->setData(Qt::UserRole + 1, t.name);
   }
   signIn_->setEnabled(trainees_->currentRow() >= 0);
+  instructorStack_->setCurrentIndex(anyInstructor ? 0 : 1);
 }
+
+bool SignInPage::offersFirstInstructor() const { return instructorStack_->currentIndex() == 1; }
 
 void SignInPage::signInSelected() {
   const QListWidgetItem* item = trainees_->currentItem();
@@ -143,6 +177,25 @@ void SignInPage::signInInstructor() {
     showError(tr("Unknown instructor or wrong password."));
     return;
   }
+  Q_EMIT signedIn({*id, Role::Instructor}, name);
+}
+
+void SignInPage::createFirstInstructor() {
+  if (!history_ || !history_->isOpen()) return;
+  if (const NewPersonProblem problem = firstInstructor_->problem(); problem != NewPersonProblem::None) {
+    showError(NewPersonForm::describe(problem));
+    return;
+  }
+  const QString name = firstInstructor_->name();
+  assessment::PeopleStore people(*history_);
+  const std::optional<qint64> id = people.addFirstInstructor(name, firstInstructor_->password());
+  if (!id) {
+    const QString reason = NewPersonForm::describe(people.lastError(), name);
+    refresh();  // another program may have made one meanwhile: offer the sign-in instead
+    showError(reason);
+    return;
+  }
+  refresh();
   Q_EMIT signedIn({*id, Role::Instructor}, name);
 }
 

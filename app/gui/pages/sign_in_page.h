@@ -1,7 +1,9 @@
 #pragma once
 // Sign-in: pick a trainee from the history or create one; instructors sign in with their
-// password (checked by HistoryDatabase::verifyInstructor). Without a usable history the
-// page says so and offers a guest session (nothing is stored).
+// password (checked by PeopleStore::verifyInstructor). In a history without any instructor
+// the instructor's box offers to create the first one instead (name, password twice;
+// PeopleStore::addFirstInstructor refuses once one exists), who is then signed in. Without a
+// usable history the page says so and offers a guest session (nothing is stored).
 
 #include "microsim/assessment/storage/history_database.h"
 
@@ -11,8 +13,11 @@ class QLabel;
 class QLineEdit;
 class QListWidget;
 class QPushButton;
+class QStackedWidget;
 
 namespace microsim::gui {
+
+class NewPersonForm;
 
 class SignInPage : public QWidget {
   Q_OBJECT
@@ -22,6 +27,8 @@ class SignInPage : public QWidget {
 
   /// Re-reads the trainees from the history.
   void refresh();
+  /// True while the page offers to create the first instructor (the history has none).
+  bool offersFirstInstructor() const;
 
  Q_SIGNALS:
   /// A person signed in; `viewer.userId` is 0 for a guest without history.
@@ -31,6 +38,7 @@ class SignInPage : public QWidget {
   void signInSelected();
   void createTrainee();
   void signInInstructor();
+  void createFirstInstructor();
   void showError(const QString& text);
 
   assessment::HistoryDatabase* history_;
@@ -39,6 +47,8 @@ class SignInPage : public QWidget {
   QLineEdit* newName_ = nullptr;
   QLineEdit* instructorName_ = nullptr;
   QLineEdit* password_ = nullptr;
+  QStackedWidget* instructorStack_ = nullptr;
+  NewPersonForm* firstInstructor_ = nullptr;
   QLabel* message_ = nullptr;
 };
 

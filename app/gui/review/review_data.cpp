@@ -1,7 +1,6 @@
 #include "gui/review/review_data.h"
 
 #include "lesson/lesson.h"
-#include "microsim/assessment/scoring/score.h"
 
 #include <QLocale>
 #include <QSet>
@@ -13,7 +12,6 @@
 
 namespace microsim::gui {
 
-using assessment::AttemptMode;
 using assessment::AttemptStatus;
 using assessment::AttemptSummary;
 
@@ -62,8 +60,6 @@ std::vector<GridRow> buildGrid(const QList<assessment::Trainee>& people, const Q
   for (const assessment::Trainee& person : people) {
     if (!group.isEmpty() && person.group != group) continue;
     GridRow row{person, {}};
-    QHash<QString, std::vector<double>> testScores;
-    // attempts come oldest first, so the Test scores are in order for proficiency
     for (const AttemptSummary& a : attempts) {
       if (a.traineeId != person.id) continue;
       GridCell& cell = row.cells[a.lesson];
@@ -72,13 +68,9 @@ std::vector<GridRow> buildGrid(const QList<assessment::Trainee>& people, const Q
       if (a.status != AttemptStatus::Finished || !a.score) continue;
       ++cell.finished;
       cell.best = cell.best ? std::max(*cell.best, *a.score) : *a.score;
-      cell.passed = cell.passed || a.passed;
-      if (a.mode == AttemptMode::Test) testScores[a.lesson].push_back(*a.score);
     }
-    for (auto it = testScores.cbegin(); it != testScores.cend(); ++it) {
-      const assessment::Rubric* rubric = catalog.rubric(it.key());
-      if (rubric) row.cells[it.key()].proficient = assessment::proficient(it.value(), *rubric);
-    }
+    for (auto it = row.cells.begin(); it != row.cells.end(); ++it)
+      it.value().status = lessonStatus(attempts, person.id, it.key(), catalog.rubric(it.key()));
     rows.push_back(std::move(row));
   }
   return rows;

@@ -7,13 +7,13 @@
 //   attempts   every attempt (in progress, interrupted and abandoned included);
 //   abandoned  those the trainee gave up on (confirmed), never scored;
 //   best       the highest stored score of the finished ones;
-//   passed     some finished attempt reached its rubric's pass mark (stored `passed`);
-//   proficient the rubric's pass mark on two consecutive finished Test attempts
-//              (assessment::proficient on their scores, oldest first).
+//   status     the trainee's standing in the lesson, from the one function the trainee's
+//              lesson list asks too (gui/pages/lesson_status.h): passed, proficient, ...
 // Target band of a metric (units of the rubric): the values with full points, i.e.
 //   bad side "above": [target, target + tolerance]; "below": [target − tolerance, target];
 //   "both": [target − tolerance, target + tolerance].
 
+#include "gui/pages/lesson_status.h"
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/storage/history_types.h"
 
@@ -58,8 +58,7 @@ struct GridCell {
   int finished = 0;
   int abandoned = 0;
   std::optional<double> best;  ///< 0..100
-  bool passed = false;
-  bool proficient = false;
+  LessonStatus status = LessonStatus::NotStarted;
 };
 
 struct GridRow {

@@ -34,8 +34,8 @@ namespace {
 constexpr int kFixedColumns = 2;  // name, group
 
 QColor cellColour(const GridCell& cell) {
-  if (cell.proficient) return {140, 205, 140};
-  if (cell.passed) return {200, 235, 200};
+  if (cell.status == LessonStatus::Proficient) return {140, 205, 140};
+  if (cell.status == LessonStatus::Passed) return {200, 235, 200};
   if (cell.finished > 0) return {250, 225, 190};
   return {235, 235, 235};
 }
@@ -210,23 +210,28 @@ void ReviewPage::buildGrid() {
     for (int c = 0; c < lessons_.size(); ++c) {
       auto* item = new QTableWidgetItem;
       item->setTextAlignment(Qt::AlignCenter);
+      // the status word under the score: the same word the trainee's lesson list shows
       auto it = row.cells.constFind(lessons_[c].id);
       if (it != row.cells.cend()) {
         const GridCell& cell = it.value();
         QString text = cell.best ? locale.toString(*cell.best, 'f', 0) : QStringLiteral("–");
         text += QStringLiteral(" (%1)").arg(cell.attempts);
-        if (cell.passed) text += QStringLiteral(" ✓");
-        if (cell.proficient) text += QStringLiteral("★");
-        item->setText(text);
+        if (cell.status == LessonStatus::Passed) text += QStringLiteral(" ✓");
+        if (cell.status == LessonStatus::Proficient) text += QStringLiteral(" ✓★");
+        item->setText(text + QLatin1Char('\n') + LessonStatusText::word(cell.status));
         item->setBackground(cellColour(cell));
         item->setToolTip(tr("%n attempt(s): %1 finished, %2 abandoned", nullptr, cell.attempts)
                              .arg(cell.finished)
                              .arg(cell.abandoned));
+      } else {
+        item->setText(LessonStatusText::word(LessonStatus::NotStarted));
+        item->setForeground(QColor(120, 120, 120));
       }
       grid_->setItem(r, kFixedColumns + c, item);
     }
   }
   grid_->resizeColumnsToContents();
+  grid_->resizeRowsToContents();
 }
 
 const Trainee* ReviewPage::shownTrainee() const {

@@ -123,6 +123,26 @@ std::optional<qint64> PeopleStore::addTrainee(const QString& name, const QString
 }
 
 std::optional<qint64> PeopleStore::addInstructor(const QString& name, const QString& password) {
+  return insertInstructor(name, password, false);
+}
+
+std::optional<qint64> PeopleStore::addFirstInstructor(const QString& name, const QString& password) {
+  return insertInstructor(name, password, true);
+}
+
+namespace {
+
+// the number of instructors; nullopt on a driver error
+std::optional<qint64> instructorCount(const QSqlDatabase& db) {
+  QSqlQuery q(db);
+  if (!q.exec(QStringLiteral("SELECT COUNT(*) FROM trainees WHERE role = 'instructor'")) || !q.next())
+    return std::nullopt;
+  return q.value(0).toLongLong();
+}
+
+}  // namespace
+
+std::optional<qint64> PeopleStore::insertInstructor(const QString& name, const QString& password, bool onlyTheFirst) {
   if (!requireOpen()) return std::nullopt;
   if (name.trimmed().isEmpty() || password.size() < kMinPasswordLength)
     return fail(HistoryError::InvalidInput), std::nullopt;
@@ -135,6 +155,14 @@ std::optional<qint64> PeopleStore::addInstructor(const QString& name, const QStr
   const PasswordHash hash = hashPassword(password, db_.passwordIterations());
   QString error;
   if (!db.transaction()) return fail(HistoryError::QueryFailed, db.lastError().text()), std::nullopt;
+  if (onlyTheFirst) {
+    // checked inside the insert's transaction, so the check and the insert are one change
+    const std::optional<qint64> count = instructorCount(db);
+    if (!count || *count > 0) {
+      db.rollback();
+      return fail(count ? HistoryError::Forbidden : HistoryError::QueryFailed, db.lastError().text()), std::nullopt;
+    }
+  }
   std::optional<qint64> id = insertPerson(db, name, Role::Instructor, {}, &error);
   if (id) {
     QSqlQuery q(db);

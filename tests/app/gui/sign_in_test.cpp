@@ -83,6 +83,72 @@ TEST(SignIn, InstructorNeedsTheRightPassword) {
   EXPECT_EQ(signedIn.at(0).at(0).value<assessment::Viewer>().role, assessment::Role::Instructor);
 }
 
+// a history without instructors: the instructor's box offers to create the first one, checks
+// what is typed, signs the new instructor in, and from then on offers the password sign-in
+TEST(SignIn, FirstRunCreatesTheFirstInstructorWhoCanThenSignIn) {
+  QTemporaryDir dir;
+  assessment::HistoryDatabase history;
+  ASSERT_TRUE(history.open(dir.filePath(QStringLiteral("first.sqlite"))).ok());
+  history.setPasswordIterations(1000);
+  ASSERT_TRUE(assessment::PeopleStore(history).addTrainee(QStringLiteral("A Trainee")).has_value());
+  SignInPage page(&history);
+  page.show();
+  ASSERT_TRUE(page.offersFirstInstructor());
+  auto* form = page.findChild<QWidget*>(QStringLiteral("firstInstructorForm"));
+  ASSERT_NE(form, nullptr);
+  EXPECT_TRUE(form->isVisible());
+  EXPECT_FALSE(page.findChild<QLineEdit*>(QStringLiteral("instructorPassword"))->isVisible());
+
+  QSignalSpy signedIn(&page, &SignInPage::signedIn);
+  auto* name = page.findChild<QLineEdit*>(QStringLiteral("newPersonName"));
+  auto* password = page.findChild<QLineEdit*>(QStringLiteral("newPersonPassword"));
+  auto* repeat = page.findChild<QLineEdit*>(QStringLiteral("newPersonRepeat"));
+  auto* create = page.findChild<QPushButton*>(QStringLiteral("createFirstInstructorButton"));
+  auto* message = page.findChild<QLabel*>(QStringLiteral("signInMessage"));
+  ASSERT_TRUE(name && password && repeat && create && message);
+
+  // the two passwords must agree, and be long enough
+  QTest::keyClicks(name, QStringLiteral("Dr Lee"));
+  QTest::keyClicks(password, QStringLiteral("correct horse"));
+  QTest::keyClicks(repeat, QStringLiteral("correct horsE"));
+  QTest::mouseClick(create, Qt::LeftButton);
+  EXPECT_EQ(signedIn.count(), 0);
+  EXPECT_TRUE(message->text().contains(QStringLiteral("differ"))) << message->text().toStdString();
+  password->setText(QStringLiteral("short"));
+  repeat->setText(QStringLiteral("short"));
+  QTest::mouseClick(create, Qt::LeftButton);
+  EXPECT_EQ(signedIn.count(), 0);
+  EXPECT_TRUE(message->text().contains(QStringLiteral("at least 8"))) << message->text().toStdString();
+  EXPECT_FALSE(assessment::PeopleStore(history).verifyInstructor(QStringLiteral("Dr Lee"), QStringLiteral("short")));
+
+  password->setText(QStringLiteral("correct horse"));
+  repeat->setText(QStringLiteral("correct horse"));
+  QTest::keyClick(repeat, Qt::Key_Return);
+  ASSERT_EQ(signedIn.count(), 1);
+  const auto viewer = signedIn.at(0).at(0).value<assessment::Viewer>();
+  EXPECT_EQ(viewer.role, assessment::Role::Instructor);
+  EXPECT_EQ(signedIn.at(0).at(1).toString(), QStringLiteral("Dr Lee"));
+  EXPECT_FALSE(page.offersFirstInstructor());
+  EXPECT_TRUE(password->text().isEmpty()) << "the password is not kept";
+
+  // signed out and back: the password sign-in, with the password just set
+  SignInPage again(&history);
+  again.show();
+  EXPECT_FALSE(again.offersFirstInstructor());
+  QSignalSpy signedInAgain(&again, &SignInPage::signedIn);
+  QTest::keyClicks(again.findChild<QLineEdit*>(QStringLiteral("instructorName")), QStringLiteral("Dr Lee"));
+  QTest::keyClicks(again.findChild<QLineEdit*>(QStringLiteral("instructorPassword")), QStringLiteral("correct horse"));
+  QTest::mouseClick(again.findChild<QPushButton*>(QStringLiteral("instructorSignInButton")), Qt::LeftButton);
+  ASSERT_EQ(signedInAgain.count(), 1);
+  EXPECT_EQ(signedInAgain.at(0).at(0).value<assessment::Viewer>().userId, viewer.userId);
+}
+
+TEST(SignIn, AHistoryWithAnInstructorOffersNoFirstRun) {
+  Page p;
+  EXPECT_FALSE(p.page->offersFirstInstructor());
+  EXPECT_TRUE(p.child<QLineEdit>("instructorPassword")->isVisible());
+}
+
 TEST(SignIn, WithoutAHistoryOffersAGuest) {
   assessment::HistoryDatabase closed;
   SignInPage page(&closed);

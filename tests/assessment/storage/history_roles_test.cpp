@@ -11,6 +11,7 @@
 #include "assessment/storage/history_backend.h"
 
 #include <QBuffer>
+#include <QSqlError>
 #include <QSqlQuery>
 
 #include <cmath>
@@ -230,6 +231,26 @@ TEST_P(HistoryRoles, InstructorPasswordIsHashedAndChecked) {
   EXPECT_EQ(q.value(2).toByteArray().size(), 16);
   EXPECT_EQ(q.value(3).toByteArray().size(), 32);
   EXPECT_FALSE(q.value(3).toByteArray().contains("correct horse"));
+}
+
+// the app's first-run path may make an instructor only while there is none
+TEST_P(HistoryRoles, FirstInstructorOnlyWhileThereIsNone) {
+  EXPECT_FALSE(people_.addFirstInstructor(QStringLiteral("Mallory"), QStringLiteral("long enough")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::Forbidden);
+  EXPECT_FALSE(people_.verifyInstructor(QStringLiteral("Mallory"), QStringLiteral("long enough")).has_value());
+
+  // a history whose only people are trainees (Ines removed; her password row goes with her)
+  QSqlQuery q(db_.connection());
+  ASSERT_TRUE(q.exec(QStringLiteral("DELETE FROM trainees WHERE role = 'instructor'"))) << q.lastError().text().toStdString();
+  EXPECT_FALSE(people_.addFirstInstructor(QStringLiteral("Ines"), QStringLiteral("short")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::InvalidInput);
+  const std::optional<qint64> first = people_.addFirstInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse"));
+  ASSERT_TRUE(first.has_value()) << people_.lastError().driverMessage.toStdString();
+  EXPECT_EQ(people_.verifyInstructor(QStringLiteral("Ines"), QStringLiteral("correct horse")), first);
+  EXPECT_FALSE(people_.addFirstInstructor(QStringLiteral("Ivo"), QStringLiteral("correct horse")).has_value());
+  EXPECT_EQ(people_.lastError().error, HistoryError::Forbidden);
+  // an instructor adds the next ones through addInstructor
+  EXPECT_TRUE(people_.addInstructor(QStringLiteral("Ivo"), QStringLiteral("correct horse")).has_value());
 }
 
 TEST_P(HistoryRoles, DuplicateAndEmptyNamesAreRefused) {

@@ -7,6 +7,7 @@
 #include "gui/simulation_runner.h"
 #include "lesson/lesson.h"
 #include "support/golden_stitch.h"
+#include "support/history_threads.h"
 #include "support/shipped_files.h"
 
 #include "microsim/assessment/storage/attempt_detail.h"
@@ -24,12 +25,9 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QThread>
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <mutex>
 #include <vector>
 
 namespace microsim::gui {
@@ -39,33 +37,7 @@ using assessment::AttemptStatus;
 using assessment::AttemptSummary;
 using assessment::HistoryDatabase;
 using assessment::Role;
-
-// the thread of every access to any history while it is installed
-class HistoryThreads {
- public:
-  HistoryThreads() {
-    HistoryDatabase::setAccessObserver([this](const HistoryDatabase&) {
-      const std::lock_guard lock(mutex_);
-      threads_.push_back(QThread::currentThread());
-    });
-  }
-  ~HistoryThreads() { HistoryDatabase::setAccessObserver({}); }
-  HistoryThreads(const HistoryThreads&) = delete;
-  HistoryThreads& operator=(const HistoryThreads&) = delete;
-
-  int accesses() const {
-    const std::lock_guard lock(mutex_);
-    return static_cast<int>(threads_.size());
-  }
-  int onGuiThread() const {
-    const std::lock_guard lock(mutex_);
-    return static_cast<int>(std::count(threads_.begin(), threads_.end(), QCoreApplication::instance()->thread()));
-  }
-
- private:
-  mutable std::mutex mutex_;
-  std::vector<QThread*> threads_;
-};
+using testing::HistoryThreads;
 
 class AttemptSessionTest : public ::testing::Test {
  protected:

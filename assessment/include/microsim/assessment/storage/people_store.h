@@ -24,9 +24,16 @@ class PeopleStore : public HistoryStore {
   std::optional<qint64> addTrainee(const QString& name, const QString& group = {});
   /// An instructor with a salted hash of `password` (HistoryDatabase::passwordIterations).
   std::optional<qint64> addInstructor(const QString& name, const QString& password);
+  /// The first instructor of a history that has none (the app's first-run path, open to
+  /// whoever starts it): as addInstructor, but Forbidden once any instructor exists, checked
+  /// in the same transaction as the insert.
+  std::optional<qint64> addFirstInstructor(const QString& name, const QString& password);
   /// The instructor's id when the password matches (constant-time compare).
   std::optional<qint64> verifyInstructor(const QString& name, const QString& password);
   QStringList groups();
+
+ private:
+  std::optional<qint64> insertInstructor(const QString& name, const QString& password, bool onlyTheFirst);
 };
 
 }  // namespace microsim::assessment
