@@ -11,6 +11,7 @@
 #include "microsim/sim/scene/scene_def.h"
 
 #include <QMatrix4x4>
+#include <QVector4D>
 
 namespace microsim::gui {
 

@@ -116,7 +116,11 @@ DrawList buildDrawList(const sim::SceneDef& def, const sim::RenderSnapshot& snap
 
   // marks on top: where each forceps' jaws meet, and a ring around what they would take
   const float field = camera.mmPerPixel(1);
-  const QQuaternion facing = QQuaternion::fromAxes(camera.right(), camera.up(), -camera.forward());
+  // rings face halfway between the microscope and the side view (side_view.h), which looks
+  // along the microscope's up axis: a ring, open in the middle, in both
+  const QVector3D normal = (-camera.forward() - camera.up()).normalized();
+  const QQuaternion facing =
+      QQuaternion::fromAxes(camera.right(), QVector3D::crossProduct(normal, camera.right()), normal);
   for (int h = 0; h < sim::kHandCount; ++h) {
     const auto hs = static_cast<std::size_t>(h);
     const sim::ToolSnapshot& forceps = snapshot.forceps[hs];

@@ -41,7 +41,7 @@ enum class DrawKind : std::uint8_t {
   ForcepsJaw,
   Scalpel,
   Scissors,     ///< reserved for the scissors of issue #19; no scene declares them yet
-  TipMarker,    ///< where a forceps' jaws meet: a reticle facing the camera, its centre open
+  TipMarker,    ///< where a forceps' jaws meet: a reticle, its centre open
   ContactCue,   ///< a ring around what a forceps' jaws would take if they closed now
   Guide,        ///< a Learn-mode mark (guide.h)
 };

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -271,6 +272,10 @@ TEST(DrawList, TheContactCueComesOnWhenTheJawsStraddleTheWall) {
   EXPECT_NEAR(at.y(), 0.0f, 0.15f);
   EXPECT_NEAR(at.z(), 0.5f, 0.1f);
   EXPECT_EQ(itemsOf(list, DrawKind::TipMarker, 1)[0]->material.colour, kTipContact);
+  // the ring faces the microscope and the side view alike (45° to each): a ring in both
+  const QVector3D normal = (cue[0]->model.map(QVector3D(0, 0, 1)) - at).normalized();
+  EXPECT_NEAR(QVector3D::dotProduct(normal, -camera.forward()), std::sqrt(0.5f), 1e-4f);
+  EXPECT_NEAR(QVector3D::dotProduct(normal, -camera.up()), std::sqrt(0.5f), 1e-4f);
 
   // closed there: the jaws hold the wall, the ring gives way to the holding colour
   list = stepWith(Eigen::Vector3d(-1.5, 0.0, 0.45), 1.0);
