@@ -2897,6 +2897,10 @@ RMS-Fehler %7 mm, größter %8 mm
         <source>Right hand active</source>
         <translation>Rechte Hand aktiv</translation>
     </message>
+    <message>
+        <source>Side view</source>
+        <translation>Seitenansicht</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::settings::SettingsDialog</name>

@@ -2897,6 +2897,10 @@ Error RMS %7 mm, máximo %8 mm
         <source>Right hand active</source>
         <translation>Mano derecha activa</translation>
     </message>
+    <message>
+        <source>Side view</source>
+        <translation>Vista lateral</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::settings::SettingsDialog</name>

@@ -3,10 +3,16 @@
 // RenderSnapshot (DESIGN.md §Data flow): the tissue with per-vertex normals from the snapshot
 // and two-sided lighting (the lumen's inner wall has its own colour), the suture and the
 // needle as smooth tubes built here from the snapshot's nodes (broken links skipped), the
-// forceps jaws from the scene's jaw mesh, and depth cues: a background plane under the scene
-// with the scene's projected shadow, darkening with depth past the focal plane and a loss of
-// contrast off it (the microscope's shallow depth of field). Learn-mode guides are drawn over
-// it; F1 shows the key map.
+// forceps jaws from the scene's jaw mesh, the scalpel in a hand that holds it, and depth cues:
+// a background plane under the scene with the scene's projected shadow, darkening with depth
+// past the focal plane and a loss of contrast off it (the microscope's shallow depth of
+// field), and a side view in the top-right corner (render/side_view.h) that shows a tool's
+// height above the tissue. Each forceps' tip is marked where its jaws meet, in the colour of
+// what they would close on now, with a ring around it (render/draw_list.h). Learn-mode
+// guides are drawn over it; F1 shows the key map.
+//
+// Each frame is one draw list (render/draw_list.h) built from the snapshot; the lit pass, the
+// shadow pass, each stereo eye and the side view draw that list.
 //
 // Mouse, with a manual source (tracking/manual_source.h): the hand first — left drag moves the
 // active tool in the view plane (its tip follows the cursor at the target's depth), the wheel
@@ -23,6 +29,7 @@
 // Without a runner it draws the mesh given to setMesh (a placeholder vessel by default).
 
 #include "gui/render/camera.h"
+#include "gui/render/draw_list.h"
 #include "gui/render/gpu_mesh.h"
 #include "gui/render/guide.h"
 #include "gui/render/stereo_mode.h"
@@ -76,6 +83,10 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   bool quadBufferAvailable() const;
   void setHelpVisible(bool visible);
   bool helpVisible() const { return helpVisible_; }
+  /// The side view in the top-right corner (on by default; never in side-by-side stereo,
+  /// where it would cover one eye's picture).
+  void setSideViewVisible(bool visible);
+  bool sideViewVisible() const { return sideViewVisible_; }
 
   /// Shows a named view of the scene (the scene's camera is home).
   void showView(NamedView view);
@@ -116,34 +127,31 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   bool buildPrograms();
   void loadStaticGeometry();
   void updateDynamicGeometry();
-  void buildGuides();
-  void drawEye(Eye eye, const QRect& area);
-  void drawScene(const QMatrix4x4& view, const QMatrix4x4& projection);
-  void drawShadows(const QMatrix4x4& view, const QMatrix4x4& projection);
+  void uploadMeshes();
+  void drawEye(Eye eye, const QRect& area, const DrawList& list);
+  void drawSideView(const DrawList& list);
+  void drawScene(const DrawList& list, const QMatrix4x4& view, const QMatrix4x4& projection, bool shadows);
+  void drawShadows(const DrawList& list, const QMatrix4x4& view);
   void drawOverlay();
-  void setShading(const QVector3D& colour, float specular, float shininess);
+  void setDepthCues(float focus, float depthOfField, float fogStart, float fogEnd);
+  void setShading(const Material& material);
   void refreshHeldNeedle();
   QRect pixelRect(const QRect& logical) const;
+  ShadedMesh& mesh(DrawMesh m) { return meshes_[static_cast<std::size_t>(m)]; }
+  GpuMesh& gpu(DrawMesh m) { return gpu_[static_cast<std::size_t>(m)]; }
+  /// The mesh's vertices and indices go up at the next frame.
+  void meshChanged(DrawMesh m) { meshDirty_[static_cast<std::size_t>(m)] = true; }
 
-  // static and dynamic meshes (CPU side)
-  ShadedMesh staticMesh_;
-  bool staticMeshDirty_ = true;
-  ShadedMesh tissue_;
-  std::vector<float> tissueColours_;
-  bool tissueTopologyDirty_ = true;
-  ShadedMesh jaw_[2];  // per hand, in the jaw frame
-  ShadedMesh needle_;
-  ShadedMesh thread_;
-  ShadedMesh guides_;
-  ShadedMesh plane_;
-  bool guidesDirty_ = true;
+  // the meshes the draw list names (CPU side), and which changed since the last upload
+  std::array<ShadedMesh, kDrawMeshCount> meshes_;
+  std::array<bool, kDrawMeshCount> meshDirty_{};
+  std::vector<float> tissueColours_;  // outer wall and lumen, per tissue vertex
+  bool tissueMoved_ = false;          // new positions, same triangles
   QMatrix4x4 shadowMatrix_;
 
   // GPU side
   std::unique_ptr<QOpenGLShaderProgram> shaded_;
-  GpuMesh staticGpu_, tissueGpu_, needleGpu_, threadGpu_, guidesGpu_, planeGpu_;
-  std::array<GpuMesh, 2> jawGpu_;
-  bool jawDirty_ = true;
+  std::array<GpuMesh, kDrawMeshCount> gpu_;
 
   QPointer<SimulationRunner> runner_;
   QPointer<tracking::ManualSource> manual_;
@@ -151,6 +159,7 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   std::vector<Guide> guideList_;
   StereoMode stereoMode_ = StereoMode::Mono;
   bool helpVisible_ = false;
+  bool sideViewVisible_ = true;
 
   MicroscopeCamera camera_;
   QPoint lastMouse_;

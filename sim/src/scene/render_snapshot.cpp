@@ -18,6 +18,35 @@ void copyPoints(const Points& x, std::vector<float>& out) {
   }
 }
 
+// what the forceps of `hand` would close on now, and where (ToolSnapshot::between)
+void fillJawTarget(const Scene& scene, Hand hand, ToolSnapshot& tool) {
+  const tools::Forceps& forceps = *scene.forceps(hand);
+  const BetweenJaws found = scene.betweenJaws(hand, forceps.closure());
+  tool.between = JawTarget::Nothing;
+  tool.betweenPoint = forceps.pose().translation().cast<float>();
+  if (found.suture) {
+    const Points& x = scene.sutureState()->x;
+    const Vec3 at = (1.0 - found.suture->fraction) * x.col(found.suture->link) +
+                    found.suture->fraction * x.col(found.suture->link + 1);
+    tool.between = found.suture->link < scene.sutureModel()->swage() ? JawTarget::Needle : JawTarget::Thread;
+    tool.betweenPoint = at.cast<float>();
+    return;
+  }
+  if (found.faces.empty()) return;
+  const auto& triangles = scene.tissue().triangles();
+  const Points& x = scene.tissueState().x;
+  Vec3 sum = Vec3::Zero();
+  double area = 0.0;
+  for (const tools::FaceGrasp& g : found.faces) {
+    const auto& t = triangles[static_cast<std::size_t>(g.face)];
+    const Vec3 p = g.barycentric.x() * x.col(t[0]) + g.barycentric.y() * x.col(t[1]) + g.barycentric.z() * x.col(t[2]);
+    sum += g.area * p;
+    area += g.area;
+  }
+  tool.between = JawTarget::Tissue;
+  tool.betweenPoint = (sum / area).cast<float>();
+}
+
 }  // namespace
 
 void vertexNormals(const std::vector<float>& positions,
@@ -73,6 +102,13 @@ void fillSnapshot(const Scene& scene, RenderSnapshot& out) {
     for (std::size_t j = 0; j < 2; ++j) tool.jaws[j] = jaws[j].matrix().cast<float>();
     tool.holdsTissue = !forceps->heldNodes().empty();
     tool.holdsSuture = forceps->holdsSuture();
+    fillJawTarget(scene, static_cast<Hand>(h), tool);
+  }
+  for (int h = 0; h < kHandCount; ++h) {
+    ScalpelSnapshot& scalpel = out.scalpels[static_cast<std::size_t>(h)];
+    const auto& blade = scene.blade(static_cast<Hand>(h));
+    scalpel.present = blade.has_value();
+    if (blade) scalpel.pose = blade->matrix().cast<float>();
   }
   out.pierceCount = static_cast<int>(scene.pierces().size());
 }

@@ -172,37 +172,45 @@ void Scene::placeTools(const InputFrame& frame) {
   }
 }
 
-void Scene::grab(int hand) {
-  tools::Forceps& f = *forceps_[static_cast<std::size_t>(hand)];
+BetweenJaws Scene::betweenJaws(Hand hand, double closure) const {
+  const std::size_t hs = static_cast<std::size_t>(hand);
+  BetweenJaws found;
+  if (!forceps_[hs]) return found;
+  const tools::Forceps& f = *forceps_[hs];
 
   // the suture first: the point of the needle or thread between the jaws nearest where they meet
   if (suture_) {
-    const tools::GraspRegion region = f.graspRegion(suture_->def().contactRadius);
-    if (const auto at = tools::chainPointBetweenJaws(region, sutureState_.x, sutureState_.alive)) {
-      f.holdSuture(*at, *suture_, sutureState_.x);
-      addEvent(SceneEventKind::GripSuture, hand, f.heldSutureNode(), 1);
-      return;
-    }
+    const tools::GraspRegion region = tools::graspRegion(f.def(), f.pose(), closure, suture_->def().contactRadius);
+    found.suture = tools::chainPointBetweenJaws(region, sutureState_.x, sutureState_.alive);
+    if (found.suture) return found;
   }
 
   // then the tissue faces between the jaws (a needle holder does not take tissue), but not
   // those the other hand holds
-  const bool holder =
-      lastFrame_ && lastFrame_->hands[static_cast<std::size_t>(hand)].instrument == Instrument::NeedleHolder;
-  std::vector<tools::FaceGrasp> faces;
-  if (!holder) {
-    const SpringModel& tissue = def_.tissue.model;
-    std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
-    for (int h = 0; h < kHandCount; ++h)
-      if (h != hand && forceps_[static_cast<std::size_t>(h)])
-        for (int n : forceps_[static_cast<std::size_t>(h)]->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
-    faces = tools::facesBetweenJaws(f.graspRegion(0.0), tissue, state_.x, skip);
+  const bool holder = lastFrame_ && lastFrame_->hands[hs].instrument == Instrument::NeedleHolder;
+  if (holder) return found;
+  const SpringModel& tissue = def_.tissue.model;
+  std::vector<std::uint8_t> skip(static_cast<std::size_t>(tissue.nodeCount()), 0);
+  for (std::size_t h = 0; h < forceps_.size(); ++h)
+    if (h != hs && forceps_[h])
+      for (int n : forceps_[h]->heldNodes()) skip[static_cast<std::size_t>(n)] = 1;
+  found.faces = tools::facesBetweenJaws(tools::graspRegion(f.def(), f.pose(), closure, 0.0), tissue, state_.x, skip);
+  return found;
+}
+
+void Scene::grab(int hand) {
+  tools::Forceps& f = *forceps_[static_cast<std::size_t>(hand)];
+  const BetweenJaws found = betweenJaws(static_cast<Hand>(hand), f.closedFrom());
+  if (found.suture) {
+    f.holdSuture(*found.suture, *suture_, sutureState_.x);
+    addEvent(SceneEventKind::GripSuture, hand, f.heldSutureNode(), 1);
+    return;
   }
-  if (faces.empty()) {
+  if (found.faces.empty()) {
     addEvent(SceneEventKind::GraspEmpty, hand, -1, 0);
     return;
   }
-  f.holdTissue(faces, def_.tissue.model, state_.x);
+  f.holdTissue(found.faces, def_.tissue.model, state_.x);
   addEvent(SceneEventKind::GrabTissue, hand, f.heldNodes().front(), static_cast<int>(f.heldNodes().size()));
 }
 

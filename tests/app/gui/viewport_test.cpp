@@ -1,6 +1,7 @@
 #include "gui/viewport.h"
 
 #include "app/gui/core_profile.h"
+#include "gui/render/side_view.h"
 #include "gui/simulation_runner.h"
 #include "tracking/manual_source.h"
 #include "support/shipped_files.h"
@@ -27,6 +28,9 @@ bool reddish(QRgb c) { return qRed(c) > qGreen(c) + 50 && qRed(c) > 90; }
 bool drape(QRgb c) { return qGreen(c) > qRed(c) + 10 && qBlue(c) > qRed(c) + 10; }
 bool threadBlue(QRgb c) { return qBlue(c) > qRed(c) + 50 && qBlue(c) > qGreen(c) + 30; }
 bool guideGreen(QRgb c) { return qGreen(c) > qRed(c) + 80 && qGreen(c) > qBlue(c) + 50; }
+bool jawMetal(QRgb c) {
+  return qRed(c) > 140 && std::abs(qRed(c) - qGreen(c)) < 25 && std::abs(qGreen(c) - qBlue(c)) < 30;
+}
 
 // a viewport at 800 × 600 on a loaded (not running) anastomosis scene
 struct Fixture {
@@ -52,6 +56,26 @@ struct Fixture {
     EXPECT_TRUE(frames.count() > 0 || frames.wait(10000));
     EXPECT_TRUE(view->lastError().isEmpty()) << view->lastError().toStdString();
     return view->grabFramebuffer();
+  }
+
+  // steps the scene once with this frame and waits for its snapshot
+  void replay(const sim::InputFrame& frame) {
+    QSignalSpy done(&runner, &SimulationRunner::replayFinished);
+    runner.replay({frame});
+    EXPECT_TRUE(done.count() > 0 || done.wait(10000));
+  }
+
+  // where a scene point lands in the side view's inset (pixels)
+  std::optional<QPoint> projectSide(const Eigen::Vector3d& p) const {
+    const MicroscopeCamera side = sideViewCamera(view->camera());
+    const QRect area = sideViewArea(view->size());
+    const QMatrix4x4 m = side.projection(static_cast<float>(area.width()) / static_cast<float>(area.height())) * side.view();
+    const QVector4D clip = m * QVector4D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()), 1.0f);
+    if (clip.w() <= 0.0f) return std::nullopt;
+    const QPoint px(area.x() + qRound((clip.x() / clip.w() + 1.0f) * 0.5f * static_cast<float>(area.width())),
+                    area.y() + qRound((1.0f - clip.y() / clip.w()) * 0.5f * static_cast<float>(area.height())));
+    if (!area.adjusted(2, 2, -2, -2).contains(px)) return std::nullopt;
+    return px;
   }
 
   // where a scene point lands on the image (pixels), through the centre eye
@@ -202,6 +226,41 @@ TEST(Viewport, DrawsGuidesAsRingsAndArrows) {
   f.view->setGuides({});
   const QImage cleared = f.draw();
   EXPECT_FALSE(anyNear(cleared, *onRing, 2, guideGreen));
+}
+
+TEST(Viewport, TheSideViewShowsAToolAboveTheTissue) {
+  Fixture f;
+  // the right forceps upright, its open jaws' tip 1.5 mm above the top of the left vessel end
+  sim::InputFrame frame;
+  frame.time = 0.01;
+  sim::HandInput& hand = frame.hand(sim::Hand::Right);
+  hand.tracked = true;
+  hand.position = Eigen::Vector3d(-1.5, 0.0, 2.0);
+  Eigen::Matrix3d upright;
+  upright << 0, 0, -1,  //
+      0, 1, 0,          //
+      1, 0, 0;
+  hand.orientation = Eigen::Quaterniond(upright);
+  f.replay(frame);
+  const QImage image = f.draw();
+
+  // in the inset: the jaws above the tip, the vessel's wall below it, the inset's own
+  // background between them
+  const auto jaw = f.projectSide(Eigen::Vector3d(-1.5, 0.0, 3.2));
+  const auto wall = f.projectSide(Eigen::Vector3d(-1.5, 0.0, 0.2));
+  const auto gap = f.projectSide(Eigen::Vector3d(-1.5, 0.0, 1.2));
+  ASSERT_TRUE(jaw && wall && gap);
+  EXPECT_TRUE(anyNear(image, *jaw, 2, jawMetal)) << std::hex << image.pixel(*jaw);
+  EXPECT_TRUE(reddish(image.pixel(*wall))) << std::hex << image.pixel(*wall);
+  EXPECT_FALSE(anyNear(image, *gap, 2, jawMetal)) << std::hex << image.pixel(*gap);
+  EXPECT_FALSE(anyNear(image, *gap, 2, reddish)) << std::hex << image.pixel(*gap);
+  EXPECT_LT(jaw->y(), gap->y());
+  EXPECT_LT(gap->y(), wall->y());
+
+  // without the inset the corner shows the microscope's view: no tool there
+  f.view->setSideViewVisible(false);
+  const QImage plain = f.draw();
+  EXPECT_FALSE(anyNear(plain, *jaw, 2, jawMetal));
 }
 
 TEST(Viewport, KeysDriveTheManualSourceAndF1ShowsTheHelp) {

@@ -1,6 +1,6 @@
 // The snapshot the viewport draws: it mirrors the scene's state after a step (positions,
-// unit normals pointing out of the wall, the suture, the forceps' poses), and refilling it
-// follows the scene as it moves.
+// unit normals pointing out of the wall, the suture, the forceps' poses, a scalpel in a hand,
+// what each forceps' jaws would close on), and refilling it follows the scene as it moves.
 #include "microsim/sim/scene/render_snapshot.h"
 
 #include "microsim/sim/scene/scene.h"
@@ -77,6 +77,89 @@ TEST(RenderSnapshot, MirrorsTheSceneAndFollowsItThroughAStitch) {
   const Eigen::Matrix4f pose = scene.forceps(Hand::Right)->pose().matrix().cast<float>();
   EXPECT_TRUE(snap.forceps[1].pose.isApprox(pose));
   for (float f : snap.tissueNormals) ASSERT_TRUE(std::isfinite(f));
+}
+
+// a right forceps pointing up (tool +x along the scene's +z), its jaws opening along the
+// scene's y, the tip at `tip`
+InputFrame uprightRightForceps(const Scene& scene, const Vec3& tip, double closure) {
+  InputFrame frame;
+  frame.time = scene.time() + scene.dt();
+  HandInput& h = frame.hand(Hand::Right);
+  h.tracked = true;
+  h.position = tip;
+  Eigen::Matrix3d r;
+  r.col(0) = Vec3::UnitZ();
+  r.col(1) = Vec3::UnitY();
+  r.col(2) = -Vec3::UnitX();
+  h.orientation = Eigen::Quaterniond(r);
+  h.closure = closure;
+  return frame;
+}
+
+TEST(RenderSnapshot, SaysWhatTheOpenJawsWouldCloseOn) {
+  const SceneDef def = renderSnapshotAnastomosis();
+  Scene scene(def);
+  RenderSnapshot snap;
+  fillSnapshot(scene, snap);
+  const ToolSnapshot& right = snap.forceps[1];
+
+  // in the air
+  scene.step(uprightRightForceps(scene, Vec3(-1.5, 0.0, 2.5), 0.0));
+  fillSnapshot(scene, snap);
+  EXPECT_EQ(right.between, JawTarget::Nothing);
+  EXPECT_TRUE(right.betweenPoint.isApprox(Eigen::Vector3f(-1.5f, 0.0f, 2.5f)));
+
+  // astride the top of the wall: the wall, at its top under the tip
+  scene.step(uprightRightForceps(scene, Vec3(-1.5, 0.0, 0.45), 0.0));
+  fillSnapshot(scene, snap);
+  EXPECT_EQ(right.between, JawTarget::Tissue);
+  EXPECT_NEAR(right.betweenPoint.x(), -1.5f, 0.15f);
+  EXPECT_NEAR(right.betweenPoint.z(), 0.5f, 0.1f);
+
+  // astride a needle node, and then a thread node: the suture, at that node, before any tissue
+  for (const int node : {2, snap.needleNodes + 6}) {
+    const Vec3 at(snap.suturePositions[3 * node], snap.suturePositions[3 * node + 1], snap.suturePositions[3 * node + 2]);
+    scene.step(uprightRightForceps(scene, at - Vec3(0.0, 0.0, 0.05), 0.0));
+    fillSnapshot(scene, snap);
+    EXPECT_EQ(right.between, node < snap.needleNodes ? JawTarget::Needle : JawTarget::Thread) << node;
+    EXPECT_LT((right.betweenPoint.cast<double>() - at).norm(), 0.05) << node;
+  }
+
+  // what the snapshot reports is what a grab takes: closing there grips the suture
+  scene.step(uprightRightForceps(scene, Vec3(snap.forceps[1].pose(0, 3), snap.forceps[1].pose(1, 3), snap.forceps[1].pose(2, 3)), 1.0));
+  fillSnapshot(scene, snap);
+  EXPECT_TRUE(right.holdsSuture);
+}
+
+TEST(RenderSnapshot, CarriesTheScalpelWhileAHandHoldsIt) {
+  SceneDefLoad load = loadSceneDef(kSnapshotTestRoot + "/resources/scenes/single_vessel.json");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  Scene scene(std::get<SceneDef>(std::move(load)));
+  RenderSnapshot snap;
+  fillSnapshot(scene, snap);
+  EXPECT_FALSE(snap.scalpels[0].present);
+  EXPECT_FALSE(snap.scalpels[1].present);
+
+  InputFrame frame;
+  frame.time = scene.dt();
+  HandInput& h = frame.hand(Hand::Right);
+  h.instrument = Instrument::Scalpel;
+  h.tracked = true;
+  h.position = Vec3(0.5, -0.2, 4.0);
+  h.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Vec3::UnitY()));
+  scene.step(frame);
+  fillSnapshot(scene, snap);
+  ASSERT_TRUE(snap.scalpels[1].present);
+  EXPECT_FALSE(snap.scalpels[0].present);
+  const Eigen::Isometry3d pose = Eigen::Translation3d(h.position) * h.orientation;
+  EXPECT_TRUE(snap.scalpels[1].pose.isApprox(pose.matrix().cast<float>()));
+
+  // put down again
+  h.instrument = Instrument::Forceps;
+  frame.time += scene.dt();
+  scene.step(frame);
+  fillSnapshot(scene, snap);
+  EXPECT_FALSE(snap.scalpels[1].present);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // What the viewport draws of one simulated step (DESIGN.md §Data flow of one frame): the
-// tissue's positions and per-vertex normals, the suture's nodes, and each tool's pose.
+// tissue's positions and per-vertex normals, the suture's nodes, each tool's pose, and what
+// each forceps' jaws would close on now (the contact cue; Scene::betweenJaws).
 //
 // The simulation thread fills a snapshot after each step and hands it over (double buffer or
 // short lock); the GUI thread only reads it. Everything is a plain value: floats laid out
@@ -21,6 +22,15 @@ namespace microsim::sim {
 
 class Scene;
 
+/// What a forceps' jaws would take if they closed now (Scene::betweenJaws), as the viewport
+/// shows it. Stored nowhere: append freely.
+enum class JawTarget : std::uint8_t {
+  Nothing,
+  Tissue,  ///< a tissue face lies between the jaws
+  Needle,  ///< the needle's body (a needle link)
+  Thread,  ///< the thread (a link past the swage)
+};
+
 struct ToolSnapshot {
   bool present = false;                                ///< the scene declares this tool
   Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();  ///< tool frame → scene
@@ -30,6 +40,19 @@ struct ToolSnapshot {
   std::array<Eigen::Matrix4f, 2> jaws{Eigen::Matrix4f::Identity(), Eigen::Matrix4f::Identity()};
   bool holdsTissue = false;
   bool holdsSuture = false;
+  /// What the jaws would close on from their closure now: the suture point nearest where
+  /// they meet, else the tissue faces between them (forceps only).
+  JawTarget between = JawTarget::Nothing;
+  /// Where (scene, mm): that suture point, or the area-weighted centroid of the faces' parts
+  /// between the jaws; the tool tip when `between` is Nothing.
+  Eigen::Vector3f betweenPoint = Eigen::Vector3f::Zero();
+};
+
+/// A scalpel in a hand: present while the hand holds it (InputFrame's instrument), and then
+/// its blade frame → scene (tools/scalpel.h: the blade is [0, length] × {0} × [0, height]).
+struct ScalpelSnapshot {
+  bool present = false;
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
 };
 
 struct RenderSnapshot {
@@ -48,6 +71,7 @@ struct RenderSnapshot {
   int needleNodes = 0;
   float sutureRadius = 0.0f;  ///< mm, the thread's contact radius
   std::array<ToolSnapshot, 2> forceps;  ///< by hand: [0] left, [1] right
+  std::array<ScalpelSnapshot, 2> scalpels;  ///< by hand: [0] left, [1] right
   int pierceCount = 0;                  ///< pierce events so far
 };
 

@@ -93,6 +93,13 @@ struct StepReport {
 
 class SceneCollision;
 
+/// What lies between a forceps' jaws as a grab searches it (tools/jaw_grasp.h): the point of
+/// the needle or thread the jaws would take, else the tissue faces they would hold.
+struct BetweenJaws {
+  std::optional<tools::ChainGrasp> suture;  ///< a link of the suture (needle links first)
+  std::vector<tools::FaceGrasp> faces;      ///< empty when the suture is found (it is taken first)
+};
+
 class Scene {
  public:
   /// `clock`: seconds from any fixed origin, never decreasing; empty = the steady wall clock.
@@ -127,6 +134,15 @@ class Scene {
   };
   const std::optional<ScissorsPose>& scissors(Hand hand) const {
     return scissors_[static_cast<std::size_t>(hand)];
+  }
+  /// What the jaws of `hand`'s forceps would close on closing from `closure` (0 open .. 1
+  /// closed) at their pose now: the search a grab makes (the suture first, then the tissue
+  /// faces not held by the other hand; a needle holder takes no tissue). Empty without a
+  /// forceps. The viewport's contact cue asks it with the closure the jaws have now.
+  BetweenJaws betweenJaws(Hand hand, double closure) const;
+  /// The scalpel's pose (blade frame → scene) while `hand` holds it; none otherwise.
+  const std::optional<Eigen::Isometry3d>& blade(Hand hand) const {
+    return blade_[static_cast<std::size_t>(hand)];
   }
   /// The controls the last tissue solve had.
   const SpringControls& controls() const { return controls_; }

@@ -103,10 +103,6 @@ class Forceps {
 
   /// The segment between the tips now.
   std::array<Vec3, 2> tips() const { return jawTips(def_, pose_, closure_); }
-  /// What the jaws closed on this frame (jaw_grasp.h), every plane pushed out by `margin`.
-  GraspRegion graspRegion(double margin) const {
-    return tools::graspRegion(def_, pose_, closedFrom_, margin);
-  }
 
   /// Takes hold of the tissue faces `faces` of `tissue` at positions x (header essay).
   void holdTissue(const std::vector<FaceGrasp>& faces, const SpringModel& tissue, const Points& x);
