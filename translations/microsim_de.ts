@@ -1022,6 +1022,18 @@
         <source>forceps closes on nothing: nothing lies between its jaws</source>
         <translation>Pinzette schließt ins Leere: zwischen ihren Branchen liegt nichts</translation>
     </message>
+    <message>
+        <source>scissors cut the thread, leaving a %1 mm end</source>
+        <translation>die Schere schneidet den Faden und lässt ein Ende von %1 mm</translation>
+    </message>
+    <message>
+        <source>scissors cut the thread</source>
+        <translation>die Schere schneidet den Faden</translation>
+    </message>
+    <message>
+        <source>the needle keeps %1 mm of thread, too short to tie</source>
+        <translation>der Nadel bleiben %1 mm Faden, zu kurz zum Knoten</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1068,6 +1080,21 @@
     <message numerus="yes">
         <source>microsim started: %n lesson(s) from %1, history %2</source>
         <translation><numerusform>microsim gestartet: %n Lektion aus %1, Verlauf %2</numerusform><numerusform>microsim gestartet: %n Lektionen aus %1, Verlauf %2</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AddPersonDialog</name>
+    <message>
+        <source>Add a trainee</source>
+        <translation>Auszubildende(n) hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add an instructor</source>
+        <translation>Ausbilder(in) hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
     </message>
 </context>
 <context>
@@ -1613,6 +1640,25 @@
         <translation>Abmelden</translation>
     </message>
     <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lektionen für %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Ziele&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+    <message>
+        <source>My progress</source>
+        <translation>Mein Fortschritt</translation>
+    </message>
+    <message>
+        <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
+        <translation>Ihre Punktzahlen über Ihre Versuche, die Rückmeldung zu jedem Versuch und die Notizen Ihrer Ausbilder</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonStatusText</name>
+    <message>
         <source>not started</source>
         <translation>nicht begonnen</translation>
     </message>
@@ -1627,14 +1673,6 @@
     <message>
         <source>proficient</source>
         <translation>sicher beherrscht</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
-        <translation>&lt;h2&gt;Lektionen für %1&lt;/h2&gt;</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
-        <translation>&lt;b&gt;Ziele&lt;/b&gt;&lt;ul&gt;</translation>
     </message>
 </context>
 <context>
@@ -1786,6 +1824,26 @@
         <source>&amp;Keys and mouse</source>
         <translation>&amp;Tasten und Maus</translation>
     </message>
+    <message>
+        <source>&amp;People</source>
+        <translation>&amp;Personen</translation>
+    </message>
+    <message>
+        <source>Add a &amp;trainee…</source>
+        <translation>&amp;Auszubildende(n) hinzufügen …</translation>
+    </message>
+    <message>
+        <source>Add an &amp;instructor…</source>
+        <translation>Ausb&amp;ilder(in) hinzufügen …</translation>
+    </message>
+    <message>
+        <source>Trainee %1 added.</source>
+        <translation>Auszubildende(r) %1 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>Instructor %1 added.</source>
+        <translation>Ausbilder(in) %1 hinzugefügt.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MetricVocabulary</name>
@@ -1920,6 +1978,92 @@
     <message>
         <source>Fixed scene point (x, y, z):</source>
         <translation>Fester Szenenpunkt (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MyProgressPage</name>
+    <message>
+        <source>&lt;h2&gt;My progress&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Mein Fortschritt&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Zurück zu den Lektionen</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lektion:</translation>
+    </message>
+    <message>
+        <source>Scores</source>
+        <translation>Punktzahlen</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Versuch</translation>
+    </message>
+    <message>
+        <source>Reading your history…</source>
+        <translation>Ihr Verlauf wird gelesen …</translation>
+    </message>
+    <message>
+        <source>Your history could not be read (%1).</source>
+        <translation>Ihr Verlauf konnte nicht gelesen werden (%1).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of these attempts carry an instructor's note: choose one to read it.</source>
+        <translation><numerusform>%n dieser Versuche trägt eine Notiz eines Ausbilders: wählen Sie ihn, um sie zu lesen.</numerusform><numerusform>%n dieser Versuche tragen eine Notiz eines Ausbilders: wählen Sie einen, um sie zu lesen.</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::NewPersonForm</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation><numerusform>mindestens %n Zeichen</numerusform><numerusform>mindestens %n Zeichen</numerusform></translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Passwort wiederholen</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Geben Sie zuerst einen Namen ein.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation><numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform><numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform></translation>
+    </message>
+    <message>
+        <source>The two passwords differ; type them again.</source>
+        <translation>Die beiden Passwörter unterscheiden sich; geben Sie sie erneut ein.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists.</source>
+        <translation>Eine Person namens %1 gibt es bereits.</translation>
+    </message>
+    <message>
+        <source>An instructor has been set up meanwhile; sign in as them.</source>
+        <translation>Inzwischen wurde ein(e) Ausbilder(in) eingerichtet; melden Sie sich als diese(r) an.</translation>
+    </message>
+    <message>
+        <source>%1 could not be added (%2).</source>
+        <translation>%1 konnte nicht hinzugefügt werden (%2).</translation>
     </message>
 </context>
 <context>
@@ -2247,10 +2391,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>Gewebe: Überdehnung, Risse, Schnitte</translation>
     </message>
     <message>
-        <source>Knots</source>
-        <translation>Knoten</translation>
-    </message>
-    <message>
         <source>Errors</source>
         <translation>Fehler</translation>
     </message>
@@ -2313,6 +2453,18 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>%1, %2 s</source>
         <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Knots and thread cuts</source>
+        <translation>Knoten und Fadenschnitte</translation>
+    </message>
+    <message>
+        <source>The scissors cut the thread</source>
+        <translation>Die Schere schneidet den Faden</translation>
+    </message>
+    <message>
+        <source>The needle was left too little thread to tie</source>
+        <translation>Der Nadel blieb zu wenig Faden zum Knoten</translation>
     </message>
 </context>
 <context>
@@ -2823,6 +2975,14 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Unknown instructor or wrong password.</source>
         <translation>Unbekannte(r) Ausbilder(in) oder falsches Passwort.</translation>
+    </message>
+    <message>
+        <source>No instructor has been set up in this history yet. Create the first one: they can then add instructors and trainees.</source>
+        <translation>In diesem Verlauf ist noch kein(e) Ausbilder(in) eingerichtet. Legen Sie die erste Person an: sie kann dann Ausbilder und Auszubildende hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Create instructor and sign in</source>
+        <translation>Ausbilder(in) anlegen und anmelden</translation>
     </message>
 </context>
 <context>

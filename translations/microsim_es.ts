@@ -1022,6 +1022,18 @@
         <source>forceps closes on nothing: nothing lies between its jaws</source>
         <translation>la pinza se cierra en vacío: no hay nada entre sus ramas</translation>
     </message>
+    <message>
+        <source>scissors cut the thread, leaving a %1 mm end</source>
+        <translation>las tijeras cortan el hilo y dejan un cabo de %1 mm</translation>
+    </message>
+    <message>
+        <source>scissors cut the thread</source>
+        <translation>las tijeras cortan el hilo</translation>
+    </message>
+    <message>
+        <source>the needle keeps %1 mm of thread, too short to tie</source>
+        <translation>a la aguja le quedan %1 mm de hilo, demasiado corto para anudar</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -1068,6 +1080,21 @@
     <message numerus="yes">
         <source>microsim started: %n lesson(s) from %1, history %2</source>
         <translation><numerusform>microsim iniciado: %n lección de %1, historial %2</numerusform><numerusform>microsim iniciado: %n lecciones de %1, historial %2</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::AddPersonDialog</name>
+    <message>
+        <source>Add a trainee</source>
+        <translation>Añadir un residente</translation>
+    </message>
+    <message>
+        <source>Add an instructor</source>
+        <translation>Añadir un instructor</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
     </message>
 </context>
 <context>
@@ -1613,6 +1640,25 @@
         <translation>Salir</translation>
     </message>
     <message>
+        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Lecciones de %1&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
+        <translation>&lt;b&gt;Objetivos&lt;/b&gt;&lt;ul&gt;</translation>
+    </message>
+    <message>
+        <source>My progress</source>
+        <translation>Mi progreso</translation>
+    </message>
+    <message>
+        <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
+        <translation>Sus puntuaciones a lo largo de sus intentos, la retroalimentación de cada intento y las notas de sus instructores</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::LessonStatusText</name>
+    <message>
         <source>not started</source>
         <translation>sin empezar</translation>
     </message>
@@ -1627,14 +1673,6 @@
     <message>
         <source>proficient</source>
         <translation>dominada</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;Lessons for %1&lt;/h2&gt;</source>
-        <translation>&lt;h2&gt;Lecciones de %1&lt;/h2&gt;</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Goals&lt;/b&gt;&lt;ul&gt;</source>
-        <translation>&lt;b&gt;Objetivos&lt;/b&gt;&lt;ul&gt;</translation>
     </message>
 </context>
 <context>
@@ -1786,6 +1824,26 @@
         <source>&amp;Keys and mouse</source>
         <translation>&amp;Teclas y ratón</translation>
     </message>
+    <message>
+        <source>&amp;People</source>
+        <translation>&amp;Personas</translation>
+    </message>
+    <message>
+        <source>Add a &amp;trainee…</source>
+        <translation>Añadir un &amp;residente…</translation>
+    </message>
+    <message>
+        <source>Add an &amp;instructor…</source>
+        <translation>Añadir un &amp;instructor…</translation>
+    </message>
+    <message>
+        <source>Trainee %1 added.</source>
+        <translation>Residente %1 añadido.</translation>
+    </message>
+    <message>
+        <source>Instructor %1 added.</source>
+        <translation>Instructor %1 añadido.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::MetricVocabulary</name>
@@ -1920,6 +1978,92 @@
     <message>
         <source>Fixed scene point (x, y, z):</source>
         <translation>Punto fijo de la escena (x, y, z):</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::MyProgressPage</name>
+    <message>
+        <source>&lt;h2&gt;My progress&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Mi progreso&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Back to the lessons</source>
+        <translation>Volver a las lecciones</translation>
+    </message>
+    <message>
+        <source>Lesson:</source>
+        <translation>Lección:</translation>
+    </message>
+    <message>
+        <source>Scores</source>
+        <translation>Puntuaciones</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Intento</translation>
+    </message>
+    <message>
+        <source>Reading your history…</source>
+        <translation>Leyendo su historial…</translation>
+    </message>
+    <message>
+        <source>Your history could not be read (%1).</source>
+        <translation>No se pudo leer su historial (%1).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of these attempts carry an instructor's note: choose one to read it.</source>
+        <translation><numerusform>%n de estos intentos tiene una nota de un instructor: elíjalo para leerla.</numerusform><numerusform>%n de estos intentos tienen una nota de un instructor: elija uno para leerla.</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::NewPersonForm</name>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Grupo</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation><numerusform>al menos %n carácter</numerusform><numerusform>al menos %n caracteres</numerusform></translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Repetir contraseña</translation>
+    </message>
+    <message>
+        <source>Type a name first.</source>
+        <translation>Escriba primero un nombre.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation><numerusform>La contraseña necesita al menos %n carácter.</numerusform><numerusform>La contraseña necesita al menos %n caracteres.</numerusform></translation>
+    </message>
+    <message>
+        <source>The two passwords differ; type them again.</source>
+        <translation>Las dos contraseñas no coinciden; escríbalas de nuevo.</translation>
+    </message>
+    <message>
+        <source>A person called %1 already exists.</source>
+        <translation>Ya existe una persona llamada %1.</translation>
+    </message>
+    <message>
+        <source>An instructor has been set up meanwhile; sign in as them.</source>
+        <translation>Mientras tanto se ha creado un instructor; inicie sesión como él.</translation>
+    </message>
+    <message>
+        <source>%1 could not be added (%2).</source>
+        <translation>No se pudo añadir a %1 (%2).</translation>
     </message>
 </context>
 <context>
@@ -2247,10 +2391,6 @@ Error RMS %7 mm, máximo %8 mm
         <translation>Tejido: sobreestiramiento, desgarros, cortes</translation>
     </message>
     <message>
-        <source>Knots</source>
-        <translation>Nudos</translation>
-    </message>
-    <message>
         <source>Errors</source>
         <translation>Errores</translation>
     </message>
@@ -2313,6 +2453,18 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>%1, %2 s</source>
         <translation>%1, %2 s</translation>
+    </message>
+    <message>
+        <source>Knots and thread cuts</source>
+        <translation>Nudos y cortes del hilo</translation>
+    </message>
+    <message>
+        <source>The scissors cut the thread</source>
+        <translation>Las tijeras cortan el hilo</translation>
+    </message>
+    <message>
+        <source>The needle was left too little thread to tie</source>
+        <translation>A la aguja le quedó muy poco hilo para anudar</translation>
     </message>
 </context>
 <context>
@@ -2823,6 +2975,14 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Unknown instructor or wrong password.</source>
         <translation>Instructor desconocido o contraseña incorrecta.</translation>
+    </message>
+    <message>
+        <source>No instructor has been set up in this history yet. Create the first one: they can then add instructors and trainees.</source>
+        <translation>Este historial aún no tiene ningún instructor. Cree el primero: después podrá añadir instructores y residentes.</translation>
+    </message>
+    <message>
+        <source>Create instructor and sign in</source>
+        <translation>Crear instructor e iniciar sesión</translation>
     </message>
 </context>
 <context>

@@ -447,7 +447,6 @@ void Viewport::drawOverlay() {
 
 void Viewport::showView(NamedView view) {
   camera_.showView(view);
-  guidesDirty_ = true;
   cameraChanged();
 }
 
