@@ -11,8 +11,8 @@
 // (a reflection of z flips the sense of the rotations about x and y: libspnav's own cube
 // example converts the same way), each past a dead zone (rate_control.h's pastDeadZone).
 // The cap moves the active tool: push it to move, twist or tilt it to turn the tool about
-// its tip. Button 0 held closes the active jaws; button 1 switches the active hand; further
-// buttons (on the larger models) do nothing.
+// its tip. Button 0 (the left one) held closes the active jaws; button 1 (the right one)
+// switches the active hand; further buttons (on the larger models) do nothing.
 
 #include "tracking/rate_control.h"
 
