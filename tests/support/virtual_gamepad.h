@@ -5,6 +5,7 @@
 // game-controller part is started.
 #include <SDL.h>
 
+#include <cmath>
 #include <string>
 
 namespace microsim::testing {
@@ -40,9 +41,14 @@ class VirtualGamepad {
   int controllersBefore() const { return controllersBefore_; }
   std::string error() const { return SDL_GetError(); }
 
-  /// An axis in SDL's units: sticks −32768..32767 (y down), triggers 0..32767.
+  /// A stick's axis in SDL's units: −32768..32767, y positive down.
   void setAxis(SDL_GameControllerAxis axis, Sint16 value) {
     SDL_JoystickSetVirtualAxis(joystick_, axis, value);
+  }
+  /// A trigger pulled by `pulled` (0..1). The virtual device's trigger is a full-range axis
+  /// resting at −32768, which SDL's controller layer reads as 0..32767, as for a real pad.
+  void setTrigger(SDL_GameControllerAxis axis, double pulled) {
+    SDL_JoystickSetVirtualAxis(joystick_, axis, static_cast<Sint16>(std::lround(-32768.0 + pulled * 65535.0)));
   }
   void setButton(SDL_GameControllerButton button, bool pressed) {
     SDL_JoystickSetVirtualButton(joystick_, button, pressed ? 1 : 0);
