@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace microsim::tracking {
 namespace {
 
@@ -37,13 +39,17 @@ sim::InputFrame gamepadTools(const Eigen::Vector3d& left, const Eigen::Vector3d&
   return f;
 }
 
-#define MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad)                                                    \
-  testing::VirtualGamepad pad;                                                                 \
-  if (pad.controllersBefore() > 0) GTEST_SKIP() << "a real game controller is plugged in here"; \
-  ASSERT_TRUE(pad.pluggedIn()) << pad.error()
+// each test plugs in its own virtual controller, and steps aside for a real one
+class GamepadSourceWithPad : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (pad.controllersBefore() > 0) GTEST_SKIP() << "a real game controller is plugged in here";
+    ASSERT_TRUE(pad.pluggedIn()) << pad.error();
+  }
+  testing::VirtualGamepad pad;
+};
 
-TEST(GamepadSource, TheLeftStickMovesTheActiveToolInTheViewPlane) {
-  MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad);
+TEST_F(GamepadSourceWithPad, TheLeftStickMovesTheActiveToolInTheViewPlane) {
   GamepadSource source(steppedByTheTest());
   source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
   source.setViewAxesProvider(gamepadSideView);
@@ -71,8 +77,7 @@ TEST(GamepadSource, TheLeftStickMovesTheActiveToolInTheViewPlane) {
   source.stop();
 }
 
-TEST(GamepadSource, TriggersCloseEachHandsJawsGraduallyAndShouldersChooseTheHand) {
-  MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad);
+TEST_F(GamepadSourceWithPad, TriggersCloseEachHandsJawsGraduallyAndShouldersChooseTheHand) {
   GamepadSource source(steppedByTheTest());
   source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
   source.setViewAxesProvider(gamepadSideView);
@@ -103,14 +108,13 @@ TEST(GamepadSource, TriggersCloseEachHandsJawsGraduallyAndShouldersChooseTheHand
   const sim::HandInput left = lastGamepadFrame(frames).hand(sim::Hand::Left);
   EXPECT_LT((left.position - Eigen::Vector3d(-1.0 - 1.0, 0, 0)).norm(), 1e-12);  // 2 mm/s · 0.5 s
   const Eigen::AngleAxisd turn(left.orientation);
-  EXPECT_NEAR(turn.angle(), 30.0 * 3.14159265358979323846 / 180.0, 1e-12);  // 60°/s · 0.5 s
+  EXPECT_NEAR(turn.angle(), 30.0 * std::numbers::pi / 180.0, 1e-12);  // 60°/s · 0.5 s
   EXPECT_LT((turn.axis() + Eigen::Vector3d::UnitZ()).norm(), 1e-9);
   EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).position, Eigen::Vector3d(1, 0, 0));
   source.stop();
 }
 
-TEST(GamepadSource, AMotionStartsFromTheToolsWhereTheSceneShowsThem) {
-  MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad);
+TEST_F(GamepadSourceWithPad, AMotionStartsFromTheToolsWhereTheSceneShowsThem) {
   GamepadSource source(steppedByTheTest());
   sim::InputFrame shown = gamepadTools({-2, 0, 0}, {2, 0, 0});
   source.setToolAnchor([&shown] { return std::optional<sim::InputFrame>(shown); });
@@ -135,8 +139,7 @@ TEST(GamepadSource, AMotionStartsFromTheToolsWhereTheSceneShowsThem) {
   source.stop();
 }
 
-TEST(GamepadSource, PollsOnItsOwnWhileTheEventLoopRuns) {
-  MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad);
+TEST_F(GamepadSourceWithPad, PollsOnItsOwnWhileTheEventLoopRuns) {
   GamepadSource source;  // polls every 10 ms
   source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
   QSignalSpy frames(&source, &TrackerSource::frameReady);
@@ -150,8 +153,7 @@ TEST(GamepadSource, PollsOnItsOwnWhileTheEventLoopRuns) {
   EXPECT_EQ(frames.count(), stopped);
 }
 
-TEST(GamepadSource, UnpluggingMarksTheHandsUntrackedAndSaysWhich) {
-  MICROSIM_PLUG_VIRTUAL_GAMEPAD(pad);
+TEST_F(GamepadSourceWithPad, UnpluggingMarksTheHandsUntrackedAndSaysWhich) {
   GamepadSource source(steppedByTheTest());
   source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
   QSignalSpy frames(&source, &TrackerSource::frameReady);
