@@ -2,8 +2,12 @@
 // an absent one is refused with its reason, and a game controller (SDL's virtual controller,
 // through the real library) drives a running scene whose recording replays to what was shown.
 #include "gui/calibration/calibration_menu.h"
+#include "gui/main_window.h"
+#include "gui/pages/attempt_page.h"
 #include "gui/simulation_runner.h"
+#include "gui/viewport.h"
 
+#include "app/gui/core_profile.h"
 #include "microsim/sim/scene/recording.h"
 #include "support/queued_signal_spy.h"
 #include "support/shipped_files.h"
@@ -19,6 +23,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 
 namespace microsim::gui {
@@ -130,6 +135,52 @@ TEST(CalibrationDevices, AGameControllerDrivesTheSceneAndIsRecordedAndReplayedLi
   ASSERT_TRUE(finished.count() > 0 || finished.wait(60000));
   EXPECT_EQ(replayed.stateHash(), shown);
   session.setSource(nullptr);
+}
+
+// In the app, the controller takes over the tools where the attempt shows them and moves them
+// along the microscope's axes as the viewport has them.
+TEST(CalibrationDevices, InTheAppTheControllerMovesTheShownToolAlongTheViewsRight) {
+  testing::VirtualGamepad pad;
+  if (pad.controllersBefore() > 0) GTEST_SKIP() << "a real game controller is plugged in here";
+  ASSERT_TRUE(pad.pluggedIn()) << pad.error();
+  requestCoreProfile();
+  QTemporaryDir dir;
+  assessment::HistoryDatabase history;
+  const QString path = dir.filePath(QStringLiteral("history.sqlite"));
+  const assessment::DatabaseStatus status = history.open(path);
+  MainWindow window(&history, status, path);
+  window.resize(800, 600);
+  window.show();
+  ASSERT_TRUE(window.startLesson(0, assessment::AttemptMode::Learn));
+  SimulationRunner* runner = window.attemptPage()->runner();
+  ASSERT_NE(runner, nullptr);
+  ASSERT_TRUE(waitForDevices([runner] { return runner->latestSnapshot() && runner->steps() > 0; }));
+  const std::optional<sim::InputFrame> shown = tracking::toolsShown(*runner->latestSnapshot());
+  ASSERT_TRUE(shown.has_value());
+
+  // the microscope turned: its right is no longer a scene axis
+  window.viewport()->camera().orbit(40.0f, 0.0f);
+  window.viewport()->cameraChanged();
+  const QVector3D right = window.viewport()->camera().right();
+  ASSERT_LT(std::abs(right.x()), 0.9f);
+
+  QString error;
+  ASSERT_TRUE(window.calibration()->useGamepad(&error)) << error.toStdString();
+  QSignalSpy frames(window.calibration(), &CalibrationSession::sceneFrameReady);
+  pad.setAxis(SDL_CONTROLLER_AXIS_LEFTX, 32767);
+  ASSERT_TRUE(waitForDevices([&] { return frames.count() >= 2; }));
+  pad.setAxis(SDL_CONTROLLER_AXIS_LEFTX, 0);
+
+  const auto first = frames.first().at(0).value<sim::InputFrame>();
+  const auto last = frames.last().at(0).value<sim::InputFrame>();
+  // the first frame is one poll away from where the right tool was shown (a keyboard start
+  // pose is not moved by the manual source unless a key is pressed)
+  EXPECT_LT((first.hand(sim::Hand::Right).position - shown->hand(sim::Hand::Right).position).norm(), 0.2);
+  const Eigen::Vector3d moved = last.hand(sim::Hand::Right).position - shown->hand(sim::Hand::Right).position;
+  ASSERT_GT(moved.norm(), 0.0);
+  EXPECT_GT(moved.normalized().dot(Eigen::Vector3d(right.x(), right.y(), right.z())), 0.999);
+  EXPECT_EQ(last.hand(sim::Hand::Left), shown->hand(sim::Hand::Left));
+  window.attemptPage()->stop();
 }
 
 }  // namespace
