@@ -1129,10 +1129,6 @@
         <translation>In 3D abspielen</translation>
     </message>
     <message>
-        <source>To end</source>
-        <translation>Zum Ende</translation>
-    </message>
-    <message>
         <source>Choose an attempt in a trainee's history.</source>
         <translation>Wählen Sie einen Versuch im Verlauf eines Trainees.</translation>
     </message>
@@ -1189,6 +1185,10 @@
     <message numerus="yes">
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>%n Bild wird abgespielt …</numerusform><numerusform>%n Bilder werden abgespielt …</numerusform></translation>
+    </message>
+    <message>
+        <source>Paused.</source>
+        <translation>Angehalten.</translation>
     </message>
 </context>
 <context>
@@ -1547,22 +1547,6 @@
         <translation>%1 ist zu niedrig.</translation>
     </message>
     <message>
-        <source>%1 µm</source>
-        <translation>%1 µm</translation>
-    </message>
-    <message>
-        <source>%1 mm</source>
-        <translation>%1 mm</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1°</source>
-        <translation>%1°</translation>
-    </message>
-    <message>
         <source>Pass each wall once: every extra passage injures it.</source>
         <translation>Jede Wand nur einmal durchstechen: jeder weitere Durchstich verletzt sie.</translation>
     </message>
@@ -1801,6 +1785,30 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Einstellungen gespeichert; der Löser gilt ab dem nächsten Versuch.</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Microscope view (reset)</source>
+        <translation>&amp;Mikroskopansicht (zurücksetzen)</translation>
+    </message>
+    <message>
+        <source>&amp;Top view</source>
+        <translation>Ansicht von &amp;oben</translation>
+    </message>
+    <message>
+        <source>&amp;Oblique view</source>
+        <translation>&amp;Schräge Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Side view</source>
+        <translation>Ansicht von der S&amp;eite</translation>
+    </message>
+    <message>
+        <source>&amp;Keys and mouse</source>
+        <translation>&amp;Tasten und Maus</translation>
     </message>
 </context>
 <context>
@@ -2199,6 +2207,136 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The fiducials lie on one line: spread them out.</source>
         <translation>Die Passermarken liegen auf einer Linie: verteilen Sie sie.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayControls</name>
+    <message>
+        <source>To the start (Home)</source>
+        <translation>Zum Anfang (Pos1)</translation>
+    </message>
+    <message>
+        <source>One frame back (Left)</source>
+        <translation>Ein Bild zurück (Links)</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>Abspielen (Leertaste)</translation>
+    </message>
+    <message>
+        <source>One frame on (Right)</source>
+        <translation>Ein Bild weiter (Rechts)</translation>
+    </message>
+    <message>
+        <source>To the end (End)</source>
+        <translation>Zum Ende (Ende)</translation>
+    </message>
+    <message>
+        <source>Replay position</source>
+        <translation>Position der Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Playback speed</source>
+        <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Stepping from the start: %p%</source>
+        <translation>Neu gerechnet vom Anfang: %p %</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>Anhalten (Leertaste)</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayTimeline</name>
+    <message>
+        <source>Pierces</source>
+        <translation>Durchstiche</translation>
+    </message>
+    <message>
+        <source>Grasps and releases</source>
+        <translation>Greifen und Loslassen</translation>
+    </message>
+    <message>
+        <source>Tissue: over-stretch, tears, cuts</source>
+        <translation>Gewebe: Überdehnung, Risse, Schnitte</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle enters the wall</source>
+        <translation>Durchstich %1: die Nadel tritt in die Wand ein</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle leaves the wall</source>
+        <translation>Durchstich %1: die Nadel tritt aus der Wand aus</translation>
+    </message>
+    <message>
+        <source>Grasp</source>
+        <translation>Greifen</translation>
+    </message>
+    <message>
+        <source>Release</source>
+        <translation>Loslassen</translation>
+    </message>
+    <message>
+        <source>Tissue over-stretched</source>
+        <translation>Gewebe überdehnt</translation>
+    </message>
+    <message>
+        <source>Tissue torn</source>
+        <translation>Gewebe gerissen</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <source>Knot</source>
+        <translation>Knoten</translation>
+    </message>
+    <message>
+        <source>The forceps closed on nothing</source>
+        <translation>Die Pinzette schloss sich ins Leere</translation>
+    </message>
+    <message>
+        <source>The suture broke</source>
+        <translation>Der Faden ist gerissen</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the suture slid out</source>
+        <translation>Durchstich %1: der Faden ist herausgerutscht</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle left it before the thread</source>
+        <translation>Durchstich %1: die Nadel verließ ihn vor dem Faden</translation>
+    </message>
+    <message>
+        <source>%1 (left hand), %2 s</source>
+        <translation>%1 (linke Hand), %2 s</translation>
+    </message>
+    <message>
+        <source>%1 (right hand), %2 s</source>
+        <translation>%1 (rechte Hand), %2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
     </message>
 </context>
 <context>
@@ -2854,10 +2992,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>Stereo</translation>
     </message>
     <message>
-        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
-        <translation>Quad-Buffer weicht auf Anaglyphe aus, wo die Anzeige es nicht kann.</translation>
-    </message>
-    <message>
         <source>QWERTY / QWERTZ (W A S D, Q E)</source>
         <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
     </message>
@@ -2912,6 +3046,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The interface language.</source>
         <translation>Die Sprache der Oberfläche.</translation>
+    </message>
+    <message>
+        <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
+        <translation>Wie die beiden Augen des Mikroskops gezeigt werden. Quad-Buffer-Stereo wird nur angeboten, wo die Anzeige linke und rechte Puffer hat.</translation>
     </message>
 </context>
 <context>
@@ -2968,16 +3106,44 @@ RMS-Fehler %7 mm, größter %8 mm
         <translation>R — Instrumente zurücksetzen</translation>
     </message>
     <message>
-        <source>Right drag — move the tool in the view plane</source>
-        <translation>Rechts ziehen — Instrument in der Bildebene bewegen</translation>
-    </message>
-    <message>
-        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
-        <translation>Links ziehen — umkreisen; Mitte oder Umschalt ziehen — verschieben; Rad — zoomen; Strg+Rad — fokussieren</translation>
-    </message>
-    <message>
         <source>F1 — show or hide this help</source>
         <translation>F1 — diese Hilfe ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Z / X — turn the held needle back / forward along its curve</source>
+        <translation>Z / X — gehaltene Nadel entlang ihrer Krümmung zurück / vorwärts drehen</translation>
+    </message>
+    <message>
+        <source>C / V — close / open the jaws a step</source>
+        <translation>C / V — Branchen schrittweise schließen / öffnen</translation>
+    </message>
+    <message>
+        <source>Left drag — move the tool in the view plane; wheel — move it in depth</source>
+        <translation>Links ziehen — Instrument in der Bildebene bewegen; Rad — in der Tiefe bewegen</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag or Ctrl + wheel — turn the held needle along its curve</source>
+        <translation>Strg + links ziehen oder Strg + Rad — gehaltene Nadel entlang ihrer Krümmung drehen</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag without a needle — turn the tool</source>
+        <translation>Strg + links ziehen ohne Nadel — Instrument drehen</translation>
+    </message>
+    <message>
+        <source>Right drag down / up — close / open the jaws; right click — close or open them</source>
+        <translation>Rechts nach unten / oben ziehen — Branchen schließen / öffnen; Rechtsklick — schließen oder öffnen</translation>
+    </message>
+    <message>
+        <source>Middle drag or Shift + left drag — orbit; Shift + middle drag — pan</source>
+        <translation>Mitte ziehen oder Umschalt + links ziehen — umkreisen; Umschalt + Mitte ziehen — verschieben</translation>
+    </message>
+    <message>
+        <source>Shift + wheel — zoom; Alt + wheel — focus</source>
+        <translation>Umschalt + Rad — zoomen; Alt + Rad — fokussieren</translation>
+    </message>
+    <message>
+        <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
+        <translation>Pos1 — Mikroskopansicht; 1 / 2 / 3 — Ansicht von oben / schräg / von der Seite</translation>
     </message>
 </context>
 <context>

@@ -1129,10 +1129,6 @@
         <translation>Reproducir en 3D</translation>
     </message>
     <message>
-        <source>To end</source>
-        <translation>Al final</translation>
-    </message>
-    <message>
         <source>Choose an attempt in a trainee's history.</source>
         <translation>Elija un intento en el historial de un residente.</translation>
     </message>
@@ -1189,6 +1185,10 @@
     <message numerus="yes">
         <source>Replaying %n frame(s)…</source>
         <translation><numerusform>Reproduciendo %n fotograma…</numerusform><numerusform>Reproduciendo %n fotogramas…</numerusform></translation>
+    </message>
+    <message>
+        <source>Paused.</source>
+        <translation>En pausa.</translation>
     </message>
 </context>
 <context>
@@ -1547,22 +1547,6 @@
         <translation>%1 es demasiado bajo.</translation>
     </message>
     <message>
-        <source>%1 µm</source>
-        <translation>%1 µm</translation>
-    </message>
-    <message>
-        <source>%1 mm</source>
-        <translation>%1 mm</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>%1°</source>
-        <translation>%1°</translation>
-    </message>
-    <message>
         <source>Pass each wall once: every extra passage injures it.</source>
         <translation>Atraviese cada pared una sola vez: cada paso de más la lesiona.</translation>
     </message>
@@ -1801,6 +1785,30 @@
     <message>
         <source>Settings saved; the solver applies from the next attempt.</source>
         <translation>Ajustes guardados; el resolutor se aplica desde el próximo intento.</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>&amp;Microscope view (reset)</source>
+        <translation>Vista del &amp;microscopio (restablecer)</translation>
+    </message>
+    <message>
+        <source>&amp;Top view</source>
+        <translation>Vista &amp;superior</translation>
+    </message>
+    <message>
+        <source>&amp;Oblique view</source>
+        <translation>Vista &amp;oblicua</translation>
+    </message>
+    <message>
+        <source>&amp;Side view</source>
+        <translation>Vista &amp;lateral</translation>
+    </message>
+    <message>
+        <source>&amp;Keys and mouse</source>
+        <translation>&amp;Teclas y ratón</translation>
     </message>
 </context>
 <context>
@@ -2199,6 +2207,136 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The fiducials lie on one line: spread them out.</source>
         <translation>Los fiduciales están en una línea: sepárelos.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayControls</name>
+    <message>
+        <source>To the start (Home)</source>
+        <translation>Al inicio (Inicio)</translation>
+    </message>
+    <message>
+        <source>One frame back (Left)</source>
+        <translation>Un fotograma atrás (Izquierda)</translation>
+    </message>
+    <message>
+        <source>Play (Space)</source>
+        <translation>Reproducir (Espacio)</translation>
+    </message>
+    <message>
+        <source>One frame on (Right)</source>
+        <translation>Un fotograma adelante (Derecha)</translation>
+    </message>
+    <message>
+        <source>To the end (End)</source>
+        <translation>Al final (Fin)</translation>
+    </message>
+    <message>
+        <source>Replay position</source>
+        <translation>Posición de la reproducción</translation>
+    </message>
+    <message>
+        <source>Playback speed</source>
+        <translation>Velocidad de reproducción</translation>
+    </message>
+    <message>
+        <source>%1×</source>
+        <translation>%1×</translation>
+    </message>
+    <message>
+        <source>Stepping from the start: %p%</source>
+        <translation>Recalculando desde el inicio: %p %</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>Pause (Space)</source>
+        <translation>Pausa (Espacio)</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::ReplayTimeline</name>
+    <message>
+        <source>Pierces</source>
+        <translation>Punciones</translation>
+    </message>
+    <message>
+        <source>Grasps and releases</source>
+        <translation>Agarres y liberaciones</translation>
+    </message>
+    <message>
+        <source>Tissue: over-stretch, tears, cuts</source>
+        <translation>Tejido: sobreestiramiento, desgarros, cortes</translation>
+    </message>
+    <message>
+        <source>Knots</source>
+        <translation>Nudos</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errores</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle enters the wall</source>
+        <translation>Punción %1: la aguja entra en la pared</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle leaves the wall</source>
+        <translation>Punción %1: la aguja sale de la pared</translation>
+    </message>
+    <message>
+        <source>Grasp</source>
+        <translation>Agarre</translation>
+    </message>
+    <message>
+        <source>Release</source>
+        <translation>Liberación</translation>
+    </message>
+    <message>
+        <source>Tissue over-stretched</source>
+        <translation>Tejido sobreestirado</translation>
+    </message>
+    <message>
+        <source>Tissue torn</source>
+        <translation>Tejido desgarrado</translation>
+    </message>
+    <message>
+        <source>Cut</source>
+        <translation>Corte</translation>
+    </message>
+    <message>
+        <source>Knot</source>
+        <translation>Nudo</translation>
+    </message>
+    <message>
+        <source>The forceps closed on nothing</source>
+        <translation>La pinza se cerró sin agarrar nada</translation>
+    </message>
+    <message>
+        <source>The suture broke</source>
+        <translation>El hilo se rompió</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the suture slid out</source>
+        <translation>Punción %1: el hilo se salió</translation>
+    </message>
+    <message>
+        <source>Pierce %1: the needle left it before the thread</source>
+        <translation>Punción %1: la aguja la dejó antes que el hilo</translation>
+    </message>
+    <message>
+        <source>%1 (left hand), %2 s</source>
+        <translation>%1 (mano izquierda), %2 s</translation>
+    </message>
+    <message>
+        <source>%1 (right hand), %2 s</source>
+        <translation>%1 (mano derecha), %2 s</translation>
+    </message>
+    <message>
+        <source>%1, %2 s</source>
+        <translation>%1, %2 s</translation>
     </message>
 </context>
 <context>
@@ -2854,10 +2992,6 @@ Error RMS %7 mm, máximo %8 mm
         <translation>Estéreo</translation>
     </message>
     <message>
-        <source>Quad-buffer falls back to anaglyph where the display cannot show it.</source>
-        <translation>El cuádruple búfer pasa a anaglifo donde la pantalla no lo admite.</translation>
-    </message>
-    <message>
         <source>QWERTY / QWERTZ (W A S D, Q E)</source>
         <translation>QWERTY / QWERTZ (W A S D, Q E)</translation>
     </message>
@@ -2912,6 +3046,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The interface language.</source>
         <translation>El idioma de la interfaz.</translation>
+    </message>
+    <message>
+        <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
+        <translation>Cómo se muestran los dos ojos del microscopio. El estéreo de cuádruple búfer solo se ofrece donde la pantalla tiene búferes izquierdo y derecho.</translation>
     </message>
 </context>
 <context>
@@ -2968,16 +3106,44 @@ Error RMS %7 mm, máximo %8 mm
         <translation>R — reiniciar los instrumentos</translation>
     </message>
     <message>
-        <source>Right drag — move the tool in the view plane</source>
-        <translation>Arrastrar con el botón derecho — mover el instrumento en el plano de la vista</translation>
-    </message>
-    <message>
-        <source>Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus</source>
-        <translation>Arrastrar con el izquierdo — orbitar; con el central o Mayús — desplazar; rueda — zoom; Ctrl+rueda — enfocar</translation>
-    </message>
-    <message>
         <source>F1 — show or hide this help</source>
         <translation>F1 — mostrar u ocultar esta ayuda</translation>
+    </message>
+    <message>
+        <source>Z / X — turn the held needle back / forward along its curve</source>
+        <translation>Z / X — girar la aguja sujeta hacia atrás / adelante a lo largo de su curva</translation>
+    </message>
+    <message>
+        <source>C / V — close / open the jaws a step</source>
+        <translation>C / V — cerrar / abrir las mandíbulas un paso</translation>
+    </message>
+    <message>
+        <source>Left drag — move the tool in the view plane; wheel — move it in depth</source>
+        <translation>Arrastrar con el botón izquierdo — mover el instrumento en el plano de la vista; rueda — moverlo en profundidad</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag or Ctrl + wheel — turn the held needle along its curve</source>
+        <translation>Ctrl + arrastrar con el izquierdo o Ctrl + rueda — girar la aguja sujeta a lo largo de su curva</translation>
+    </message>
+    <message>
+        <source>Ctrl + left drag without a needle — turn the tool</source>
+        <translation>Ctrl + arrastrar con el izquierdo sin aguja — girar el instrumento</translation>
+    </message>
+    <message>
+        <source>Right drag down / up — close / open the jaws; right click — close or open them</source>
+        <translation>Arrastrar con el derecho hacia abajo / arriba — cerrar / abrir las mandíbulas; clic derecho — cerrarlas o abrirlas</translation>
+    </message>
+    <message>
+        <source>Middle drag or Shift + left drag — orbit; Shift + middle drag — pan</source>
+        <translation>Arrastrar con el central o Mayús + arrastrar con el izquierdo — orbitar; Mayús + arrastrar con el central — desplazar</translation>
+    </message>
+    <message>
+        <source>Shift + wheel — zoom; Alt + wheel — focus</source>
+        <translation>Mayús + rueda — zoom; Alt + rueda — enfocar</translation>
+    </message>
+    <message>
+        <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
+        <translation>Inicio — vista del microscopio; 1 / 2 / 3 — vista superior / oblicua / lateral</translation>
     </message>
 </context>
 <context>

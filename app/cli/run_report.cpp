@@ -40,6 +40,10 @@ const char* eventKey(sim::SceneEventKind k) {
       return "tissue-tear";
     case K::GraspEmpty:
       return "grasp-empty";
+    case K::ThreadCut:
+      return "thread-cut";
+    case K::ThreadTooShort:
+      return "thread-too-short";
   }
   return "";
 }
@@ -75,6 +79,11 @@ QString eventText(const sim::SceneEvent& e) {
       return Cli::tr("tissue tears: %n link(s) removed", nullptr, e.count);
     case K::GraspEmpty:
       return Cli::tr("forceps closes on nothing: nothing lies between its jaws");
+    case K::ThreadCut:
+      return e.value >= 0.0 ? Cli::tr("scissors cut the thread, leaving a %1 mm end").arg(e.value, 0, 'f', 2)
+                            : Cli::tr("scissors cut the thread");
+    case K::ThreadTooShort:
+      return Cli::tr("the needle keeps %1 mm of thread, too short to tie").arg(e.value, 0, 'f', 2);
   }
   return {};
 }
@@ -194,6 +203,7 @@ std::string runReportJson(const sim::Scene& scene, const QString& sceneFile,
   for (const sim::SceneEvent& e : scene.events()) {
     nlohmann::json j = {{"kind", eventKey(e.kind)}, {"time", e.time},   {"step", e.step},
                         {"hand", e.hand},           {"index", e.index}, {"count", e.count}};
+    if (e.value != 0.0) j["value"] = e.value;
     if (isPierce(e)) j["pierce"] = pierceJson(scene.pierces()[static_cast<std::size_t>(e.index)]);
     events.push_back(std::move(j));
   }

@@ -162,6 +162,22 @@ void MainWindow::buildMenus() {
   preferences->setShortcut(QKeySequence::Preferences);
   preferences->setObjectName(QStringLiteral("settingsAction"));
 
+  // the microscope's named views (render/camera.h) and the key and mouse map
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  const auto addView = [this, view](const QString& text, const QKeySequence& key, NamedView named, const char* name) {
+    QAction* action = view->addAction(text, this, [this, named] { viewport()->showView(named); });
+    action->setShortcut(key);
+    action->setObjectName(QString::fromLatin1(name));
+  };
+  addView(tr("&Microscope view (reset)"), QKeySequence(Qt::Key_Home), NamedView::Microscope, "microscopeViewAction");
+  addView(tr("&Top view"), QKeySequence(Qt::Key_1), NamedView::Top, "topViewAction");
+  addView(tr("&Oblique view"), QKeySequence(Qt::Key_2), NamedView::Oblique, "obliqueViewAction");
+  addView(tr("&Side view"), QKeySequence(Qt::Key_3), NamedView::Side, "sideViewAction");
+  view->addSeparator();
+  QAction* keys = view->addAction(tr("&Keys and mouse"), this, [this] { viewport()->setHelpVisible(!viewport()->helpVisible()); });
+  keys->setShortcut(QKeySequence(Qt::Key_F1));
+  keys->setObjectName(QStringLiteral("keyMapAction"));
+
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About microsim"), this, &MainWindow::showAbout);
 }

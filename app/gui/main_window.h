@@ -1,7 +1,7 @@
 #pragma once
 // The main window: a stack of pages — sign-in, the lesson list, an attempt (the microscope
-// viewport with the lesson's steps), and its results — with menus (settings, language)
-// and a status bar that says where the trainee history is kept (or why it could
+// viewport with the lesson's steps), and its results — with menus (settings, language, the
+// microscope's named views and the key and mouse map) and a status bar that says where the trainee history is kept (or why it could
 // not be opened).
 //
 // Closing the window during an attempt stops the simulation and leaves the attempt unfinished

@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QListWidget>
 #include <QPixmap>
 #include <QPushButton>
@@ -44,8 +45,9 @@ void settle() {
   for (int i = 0; i < 5; ++i) QApplication::processEvents();
 }
 
-bool saveScreenShot(QWidget& widget, const QString& file, QStringList& written) {
+bool saveScreenShot(QWidget& widget, const QString& file, QStringList& written, const ScreenInspector& inspect) {
   settle();
+  if (inspect) inspect(QFileInfo(file).fileName(), widget);
   if (!widget.grab().save(file)) return false;
   written << file;
   return true;
@@ -53,7 +55,8 @@ bool saveScreenShot(QWidget& widget, const QString& file, QStringList& written) 
 
 }  // namespace
 
-QStringList writeScreenshots(const QString& directory, QString* error, int width, int height) {
+QStringList writeScreenshots(const QString& directory, QString* error, int width, int height,
+                             const ScreenInspector& inspect) {
   auto fail = [error](const QString& why) {
     if (error) *error = why;
     return QStringList();
@@ -74,12 +77,12 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   QStringList written;
 
   // sign-in, then the lessons of the first trainee
-  if (!saveScreenShot(window, out.filePath(QStringLiteral("sign-in.png")), written)) return fail(QStringLiteral("sign-in"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("sign-in.png")), written, inspect)) return fail(QStringLiteral("sign-in"));
   auto* list = window.signInPage()->findChild<QListWidget*>(QStringLiteral("traineeList"));
   list->setCurrentRow(0);
   window.signInPage()->findChild<QPushButton*>(QStringLiteral("signInButton"))->click();
   window.lessonListPage()->selectRow(1);
-  if (!saveScreenShot(window, out.filePath(QStringLiteral("lessons.png")), written)) return fail(QStringLiteral("lessons"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("lessons.png")), written, inspect)) return fail(QStringLiteral("lessons"));
 
   // lesson 2 in Learn mode, the shipped stitch replayed up to the first pierce
   sim::Recording stitch;
@@ -93,22 +96,22 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   const int frames = window.viewport()->framesDrawn();
   window.viewport()->update();
   if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
-  if (!saveScreenShot(window, out.filePath(QStringLiteral("attempt-learn.png")), written)) return fail(QStringLiteral("attempt"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("attempt-learn.png")), written, inspect)) return fail(QStringLiteral("attempt"));
 
   // the whole stitch, scored
   attempt->replay(stitch.frames, true);
   if (!waitFor(attempt, &AttemptPage::finished, 120000)) return fail(QStringLiteral("results"));
-  if (!saveScreenShot(window, out.filePath(QStringLiteral("results.png")), written)) return fail(QStringLiteral("results"));
+  if (!saveScreenShot(window, out.filePath(QStringLiteral("results.png")), written, inspect)) return fail(QStringLiteral("results"));
 
   // the settings dialog
   settings::SettingsDialog dialog(&window);
   dialog.show();
-  if (!saveScreenShot(dialog, out.filePath(QStringLiteral("settings.png")), written)) return fail(QStringLiteral("settings"));
+  if (!saveScreenShot(dialog, out.filePath(QStringLiteral("settings.png")), written, inspect)) return fail(QStringLiteral("settings"));
   dialog.close();
   window.close();
 
   // the instructor's review, on demo data of its own
-  const QStringList review = writeReviewScreenshots(directory);
+  const QStringList review = writeReviewScreenshots(directory, inspect);
   if (review.isEmpty()) return fail(QStringLiteral("review"));
   written += review;
   return written;

@@ -7,11 +7,19 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
+class QWidget;
+
 namespace microsim::gui {
+
+/// Called with each screen as it is captured, laid out at its size (the PNG's file name and
+/// the window or dialog), e.g. by a test that checks every label fits.
+using ScreenInspector = std::function<void(const QString& fileName, QWidget& screen)>;
 
 /// Writes the screens to `directory` at `width`×`height`; returns the files written, empty on
 /// failure (with `error` saying why).
 QStringList writeScreenshots(const QString& directory, QString* error = nullptr, int width = 1280,
-                             int height = 800);
+                             int height = 800, const ScreenInspector& inspect = {});
 
 }  // namespace microsim::gui

@@ -2,6 +2,7 @@
 
 #include "gui/render/tube_builder.h"
 #include "gui/simulation_runner.h"
+#include "tracking/held_needle_arc.h"
 #include "tracking/manual_source.h"
 
 #include <QKeyEvent>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace microsim::gui {
 
@@ -30,6 +32,14 @@ const QVector3D kDrape(0.08f, 0.26f, 0.28f);
 const QVector3D kGuide(0.15f, 0.95f, 0.35f);
 const QVector3D kGuideDone(0.45f, 0.50f, 0.47f);
 const QVector3D kBackground(0.07f, 0.06f, 0.06f);
+
+// mouse gains, sized for a 1 mm vessel under the microscope
+constexpr float kMouseOrbitDegPerPixel = 0.15f;
+constexpr double kMouseTurnDegPerPixel = 0.5;     // Ctrl + drag, about the needle or the tip
+constexpr double kWheelDepthMmPerNotch = 0.1;
+constexpr double kWheelNeedleDegPerNotch = 2.0;
+constexpr double kMouseClosurePerPixel = 1.0 / 150.0;  // a 150-pixel right drag: open to closed
+constexpr int kMouseClickSlopPixels = 3;
 
 QVector3D toQt(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
@@ -542,32 +552,82 @@ void Viewport::drawOverlay() {
 
 // ---- input ---------------------------------------------------------------------------------
 
-void Viewport::mousePressEvent(QMouseEvent* event) { lastMouse_ = event->position().toPoint(); }
+void Viewport::showView(NamedView view) {
+  camera_.showView(view);
+  guidesDirty_ = true;
+  cameraChanged();
+}
+
+void Viewport::refreshHeldNeedle() {
+  if (!manual_) return;
+  const std::shared_ptr<const sim::RenderSnapshot> latest = runner_ ? runner_->latestSnapshot() : nullptr;
+  for (const sim::Hand hand : {sim::Hand::Left, sim::Hand::Right})
+    manual_->setHeldNeedle(hand, latest ? tracking::heldNeedleArc(*latest, hand) : std::nullopt);
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+  lastMouse_ = event->position().toPoint();
+  pressMouse_ = lastMouse_;
+  if (event->button() == Qt::RightButton) rightDragged_ = false;
+  refreshHeldNeedle();
+}
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
   const QPoint p = event->position().toPoint();
   const QPoint delta = p - lastMouse_;
   lastMouse_ = p;
+  const Qt::MouseButtons buttons = event->buttons();
   const bool shift = event->modifiers().testFlag(Qt::ShiftModifier);
-  if ((event->buttons() & Qt::MiddleButton) || ((event->buttons() & Qt::LeftButton) && shift)) {
+  const bool ctrl = event->modifiers().testFlag(Qt::ControlModifier);
+  const bool left = buttons.testFlag(Qt::LeftButton);
+  if (buttons.testFlag(Qt::MiddleButton) && shift) {
     camera_.pan(static_cast<float>(delta.x()), static_cast<float>(delta.y()), height());
     cameraChanged();
-  } else if (event->buttons() & Qt::LeftButton) {
-    camera_.orbit(0.4f * static_cast<float>(delta.x()), 0.4f * static_cast<float>(delta.y()));
+  } else if (buttons.testFlag(Qt::MiddleButton) || (left && (shift || !manual_))) {
+    camera_.orbit(kMouseOrbitDegPerPixel * static_cast<float>(delta.x()),
+                  kMouseOrbitDegPerPixel * static_cast<float>(delta.y()));
     cameraChanged();
-  } else if ((event->buttons() & Qt::RightButton) && manual_) {
+  } else if (left && ctrl) {
+    // the larger of the two directions: right or up turns the needle forward
+    const int along = std::abs(delta.x()) >= std::abs(delta.y()) ? delta.x() : -delta.y();
+    if (!manual_->turnAlongNeedle(kMouseTurnDegPerPixel * along))
+      manual_->turnInView(kMouseTurnDegPerPixel * delta.x(), kMouseTurnDegPerPixel * delta.y());
+  } else if (left) {
     const double s = camera_.mmPerPixel(height());
     manual_->moveInView(s * delta.x(), -s * delta.y());
+  } else if (buttons.testFlag(Qt::RightButton) && manual_) {
+    if ((p - pressMouse_).manhattanLength() > kMouseClickSlopPixels) rightDragged_ = true;
+    if (rightDragged_ && delta.y() != 0) {
+      const double closure = manual_->current().hand(manual_->activeHand()).closure;
+      manual_->setClosure(closure + kMouseClosurePerPixel * delta.y());
+    }
+  }
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+  if (event->button() == Qt::RightButton && manual_ && !rightDragged_) {
+    const double closure = manual_->current().hand(manual_->activeHand()).closure;
+    manual_->setClosure(closure >= 0.5 ? 0.0 : 1.0);
   }
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
-  const float steps = static_cast<float>(event->angleDelta().y()) / 120.0f;
-  if (event->modifiers().testFlag(Qt::ControlModifier)) {
+  // Alt turns a vertical wheel horizontal on some platforms: take whichever axis turned
+  const QPoint angle = event->angleDelta();
+  const float steps = static_cast<float>(angle.y() != 0 ? angle.y() : angle.x()) / 120.0f;
+  const Qt::KeyboardModifiers modifiers = event->modifiers();
+  if (modifiers.testFlag(Qt::AltModifier)) {
     camera_.setFocusDistance(camera_.focusDistance() - 0.05f * camera_.distance() * steps);
-  } else {
+  } else if (modifiers.testFlag(Qt::ShiftModifier) || !manual_) {
     camera_.zoom(steps);
     guidesDirty_ = true;
+  } else if (modifiers.testFlag(Qt::ControlModifier)) {
+    refreshHeldNeedle();
+    manual_->turnAlongNeedle(kWheelNeedleDegPerNotch * steps);
+    return;
+  } else {
+    manual_->moveInDepth(-kWheelDepthMmPerNotch * steps);  // the wheel turned away: deeper
+    return;
   }
   cameraChanged();
 }
@@ -577,6 +637,16 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     if (!event->isAutoRepeat()) setHelpVisible(!helpVisible_);
     return;
   }
+  const std::array<std::pair<int, NamedView>, 4> views{{{Qt::Key_Home, NamedView::Microscope},
+                                                        {Qt::Key_1, NamedView::Top},
+                                                        {Qt::Key_2, NamedView::Oblique},
+                                                        {Qt::Key_3, NamedView::Side}}};
+  for (const auto& [key, view] : views)
+    if (event->key() == key) {
+      showView(view);
+      return;
+    }
+  refreshHeldNeedle();
   if (manual_ && manual_->handleKey(event->key(), event->modifiers(), true, event->isAutoRepeat())) {
     update();
     return;

@@ -8,9 +8,16 @@
 // contrast off it (the microscope's shallow depth of field). Learn-mode guides are drawn over
 // it; F1 shows the key map.
 //
-// Mouse: left drag orbits, middle (or Shift + left) drag pans, the wheel zooms, Ctrl + wheel
-// moves the focal plane, right drag moves the active tool in the view plane (with a manual
-// source). Keys go to the manual source (tracking/manual_source.h), F1 toggles the help.
+// Mouse, with a manual source (tracking/manual_source.h): the hand first — left drag moves the
+// active tool in the view plane (its tip follows the cursor at the target's depth), the wheel
+// moves it in depth, Ctrl + left drag or Ctrl + wheel turns the needle it holds along its own
+// curve (without a needle Ctrl + drag turns the tool), right drag down/up closes/opens its
+// jaws gradually and a right click closes or opens them; the camera second — middle drag or
+// Shift + left drag orbits, Shift + middle drag pans, Shift + wheel zooms, Alt + wheel moves
+// the focal plane. Without a manual source left drag orbits and the wheel zooms. Keys go to
+// the manual source; Home and 1 / 2 / 3 show the named views (render/camera.h: microscope,
+// top, oblique, side), F1 toggles the help. Before an input that may turn along the needle,
+// the manual source is told what each hand holds in the latest snapshot.
 //
 // It redraws when the runner publishes a snapshot and reads it without waiting on a step.
 // Without a runner it draws the mesh given to setMesh (a placeholder vessel by default).
@@ -70,6 +77,9 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void setHelpVisible(bool visible);
   bool helpVisible() const { return helpVisible_; }
 
+  /// Shows a named view of the scene (the scene's camera is home).
+  void showView(NamedView view);
+
   MicroscopeCamera& camera() { return camera_; }
   const MicroscopeCamera& camera() const { return camera_; }
   /// Call after changing the camera through camera().
@@ -95,6 +105,7 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void paintGL() override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void keyReleaseEvent(QKeyEvent* event) override;
@@ -111,6 +122,7 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void drawShadows(const QMatrix4x4& view, const QMatrix4x4& projection);
   void drawOverlay();
   void setShading(const QVector3D& colour, float specular, float shininess);
+  void refreshHeldNeedle();
   QRect pixelRect(const QRect& logical) const;
 
   // static and dynamic meshes (CPU side)
@@ -142,6 +154,8 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
 
   MicroscopeCamera camera_;
   QPoint lastMouse_;
+  QPoint pressMouse_;
+  bool rightDragged_ = false;  // the right button moved since it was pressed: no click
   int framesDrawn_ = 0;
   int drawnStep_ = -1;
   QString lastError_;

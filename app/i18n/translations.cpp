@@ -23,7 +23,13 @@ QString languageFromSettings() {
   return chooseLanguage(QSettings().value(languageSettingKey()).toString());
 }
 
+QLocale localeFor(const QString& language, const QLocale& system) {
+  if (QLocale::languageToCode(system.language()) == language) return system;
+  return QLocale(language);
+}
+
 bool installTranslations(QCoreApplication& app, const QString& language) {
+  QLocale::setDefault(localeFor(language));
   if (language == QLatin1String("en")) return true;
 
   // the translators live as long as the application, which owns them

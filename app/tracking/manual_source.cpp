@@ -58,6 +58,7 @@ void ManualSource::placeTools(const sim::SceneDef& def) {
   Eigen::Vector3d up = def.camera.up - def.camera.up.dot(toward) * toward;
   up = up.norm() > 1e-9 ? up.normalized() : toward.unitOrthogonal();
   const Eigen::Vector3d right = up.cross(toward);
+  volume_ = Eigen::AlignedBox3d(target);
   for (int h = 0; h < sim::kHandCount; ++h) {
     const double side = h == 0 ? -1.0 : 1.0;
     sim::HandInput& in = home_[static_cast<std::size_t>(h)];
@@ -66,8 +67,23 @@ void ManualSource::placeTools(const sim::SceneDef& def) {
     in.position = target + side * 1.2 * right + 0.6 * toward;
     in.orientation = toolOrientation(side * right + toward, up);
     in.closure = 0.0;
+    volume_.extend(in.position);
   }
+  const auto rest = def.tissue.model.restPositions();
+  for (Eigen::Index i = 0; i < rest.cols(); ++i) volume_.extend(Eigen::Vector3d(rest.col(i)));
+  if (def.needle) {
+    // the needle where it lies, as far as it reaches from its frame's origin either way
+    const sim::suture::SutureDef& needle = def.needle->suture;
+    const double reach = needle.needleShape == sim::suture::NeedleShape::Curved ? 2.0 * needle.needleRadius
+                                                                               : needle.needleLength;
+    const Eigen::Vector3d at = def.needle->pose.translation();
+    volume_.extend(at - Eigen::Vector3d::Constant(reach));
+    volume_.extend(at + Eigen::Vector3d::Constant(reach));
+  }
+  volume_.min().array() -= kWorkingMarginMm;
+  volume_.max().array() += kWorkingMarginMm;
   frame_.hands = home_;
+  held_ = {};
   if (running_) emitFrame();
 }
 
@@ -84,14 +100,14 @@ bool ManualSource::handleKey(int key, Qt::KeyboardModifiers modifiers, bool pres
   const double angle = fine ? kFineStepDeg : kStepDeg;
   if (key == Qt::Key_Space) {
     if (autoRepeat) return true;
-    frame_.hand(active_).closure = pressed ? 1.0 : 0.0;
-    emitFrame();
+    setClosure(pressed ? 1.0 : 0.0);
     return true;
   }
   const bool known = key == Qt::Key_Tab || key == Qt::Key_Backtab || key == Qt::Key_A ||
                      key == Qt::Key_D || key == Qt::Key_W || key == Qt::Key_S || key == Qt::Key_Q ||
                      key == Qt::Key_E || key == Qt::Key_Left || key == Qt::Key_Right ||
-                     key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_R;
+                     key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_R ||
+                     key == Qt::Key_Z || key == Qt::Key_X || key == Qt::Key_C || key == Qt::Key_V;
   if (!known) return false;
   if (!pressed) return true;  // moves happen on presses and key repeats
   switch (key) {
@@ -111,6 +127,10 @@ bool ManualSource::handleKey(int key, Qt::KeyboardModifiers modifiers, bool pres
     case Qt::Key_Right: turn(up_, -angle); break;
     case Qt::Key_Up: turn(right_, -angle); break;
     case Qt::Key_Down: turn(right_, angle); break;
+    case Qt::Key_Z: turnAlongNeedle(-(fine ? kFineArcStepDeg : kArcStepDeg)); break;
+    case Qt::Key_X: turnAlongNeedle(fine ? kFineArcStepDeg : kArcStepDeg); break;
+    case Qt::Key_C: setClosure(frame_.hand(active_).closure + kClosureStep); break;
+    case Qt::Key_V: setClosure(frame_.hand(active_).closure - kClosureStep); break;
     case Qt::Key_R:
       frame_.hands = home_;
       emitFrame();
@@ -122,9 +142,49 @@ bool ManualSource::handleKey(int key, Qt::KeyboardModifiers modifiers, bool pres
 
 void ManualSource::moveInView(double rightMm, double upMm) { move(rightMm * right_ + upMm * up_); }
 
-void ManualSource::move(const Eigen::Vector3d& deltaMm) {
-  frame_.hand(active_).position += deltaMm;
+void ManualSource::moveInDepth(double towardMm) { move(towardMm * toward_); }
+
+void ManualSource::turnInView(double aboutUpDeg, double aboutRightDeg) {
+  sim::HandInput& h = frame_.hand(active_);
+  const Eigen::Quaterniond yaw(Eigen::AngleAxisd(aboutUpDeg * std::numbers::pi / 180.0, up_));
+  const Eigen::Quaterniond pitch(Eigen::AngleAxisd(aboutRightDeg * std::numbers::pi / 180.0, right_));
+  h.orientation = (pitch * yaw * h.orientation).normalized();
   emitFrame();
+}
+
+bool ManualSource::turnAlongNeedle(double degrees) {
+  const std::optional<HeldNeedleArc>& arc = held_[static_cast<std::size_t>(active_)];
+  if (!arc) return false;
+  // a rigid turn of the tool (and the needle on its jaws) about the circle's axis through its
+  // centre: the needle slides along its own circle
+  sim::HandInput& h = frame_.hand(active_);
+  const Eigen::Vector3d centre = h.position + h.orientation * arc->centre;
+  const Eigen::Quaterniond r(Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, h.orientation * arc->axis));
+  h.position = centre + r * (h.position - centre);
+  h.orientation = (r * h.orientation).normalized();
+  clampToVolume(h);
+  emitFrame();
+  return true;
+}
+
+void ManualSource::setClosure(double closure) {
+  frame_.hand(active_).closure = std::clamp(closure, 0.0, 1.0);
+  emitFrame();
+}
+
+void ManualSource::setHeldNeedle(sim::Hand hand, const std::optional<HeldNeedleArc>& arc) {
+  held_[static_cast<std::size_t>(hand)] = arc;
+}
+
+void ManualSource::move(const Eigen::Vector3d& deltaMm) {
+  sim::HandInput& h = frame_.hand(active_);
+  h.position += deltaMm;
+  clampToVolume(h);
+  emitFrame();
+}
+
+void ManualSource::clampToVolume(sim::HandInput& hand) const {
+  hand.position = hand.position.cwiseMax(volume_.min()).cwiseMin(volume_.max());
 }
 
 void ManualSource::turn(const Eigen::Vector3d& axis, double degrees) {
@@ -149,11 +209,18 @@ QStringList ManualSource::keyMapHelp() {
       tr("Q / E — move away / toward you"),
       tr("← / → — turn the tool"),
       tr("↑ / ↓ — tilt the tool"),
+      tr("Z / X — turn the held needle back / forward along its curve"),
+      tr("C / V — close / open the jaws a step"),
       tr("Space (hold) — close the jaws"),
       tr("Shift — fine steps"),
       tr("R — reset the tools"),
-      tr("Right drag — move the tool in the view plane"),
-      tr("Left drag — orbit; middle or Shift drag — pan; wheel — zoom; Ctrl+wheel — focus"),
+      tr("Left drag — move the tool in the view plane; wheel — move it in depth"),
+      tr("Ctrl + left drag or Ctrl + wheel — turn the held needle along its curve"),
+      tr("Ctrl + left drag without a needle — turn the tool"),
+      tr("Right drag down / up — close / open the jaws; right click — close or open them"),
+      tr("Middle drag or Shift + left drag — orbit; Shift + middle drag — pan"),
+      tr("Shift + wheel — zoom; Alt + wheel — focus"),
+      tr("Home — microscope view; 1 / 2 / 3 — top / oblique / side view"),
       tr("F1 — show or hide this help"),
   };
 }

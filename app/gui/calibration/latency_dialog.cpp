@@ -1,5 +1,7 @@
 #include "gui/calibration/latency_dialog.h"
 
+#include "gui/number_format.h"
+
 #include "tracking/tracker_source.h"
 
 #include <QComboBox>
@@ -79,13 +81,13 @@ const calibration::LatencyResult& LatencyDialog::stopRecording() {
   result_ = calibration::estimateLatency(calibration::speedSignal(referencePath_), calibration::speedSignal(trackedPath_));
   switch (result_.status) {
     case calibration::LatencyStatus::Ok:
-      label_->setText(tr("Latency %1 ms (correlation %2)").arg(result_.latency * 1000.0, 0, 'f', 1).arg(result_.correlation, 0, 'f', 2));
+      label_->setText(tr("Latency %1 ms (correlation %2)").arg(NumberFormat::number(result_.latency * 1000.0, 1)).arg(NumberFormat::number(result_.correlation, 2)));
       break;
     case calibration::LatencyStatus::TooShort: label_->setText(tr("Too short: record longer.")); break;
     case calibration::LatencyStatus::NonFinite: label_->setText(tr("The devices sent invalid samples.")); break;
     case calibration::LatencyStatus::Flat: label_->setText(tr("No motion: move the tool.")); break;
     case calibration::LatencyStatus::WeakCorrelation:
-      label_->setText(tr("The motions do not match (correlation %1): move them together.").arg(result_.correlation, 0, 'f', 2));
+      label_->setText(tr("The motions do not match (correlation %1): move them together.").arg(NumberFormat::number(result_.correlation, 2)));
       break;
   }
   buttons_->button(QDialogButtonBox::Ok)->setEnabled(result_.ok());

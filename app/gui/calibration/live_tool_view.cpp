@@ -1,5 +1,7 @@
 #include "gui/calibration/live_tool_view.h"
 
+#include "gui/number_format.h"
+
 #include "tracking/tracker_source.h"
 
 #include <QPainter>
@@ -67,7 +69,7 @@ void LiveToolView::paintEvent(QPaintEvent*) {
     p.drawLine(QPointF(box.center().x(), box.top()), QPointF(box.center().x(), box.bottom()));
     p.setPen(palette().text().color());
     p.drawText(box.adjusted(4, 2, -4, -2), Qt::AlignTop | Qt::AlignLeft,
-               panels[static_cast<std::size_t>(panel)].second + QStringLiteral("  ±%1 mm").arg(rangeMm_, 0, 'f', 0));
+               panels[static_cast<std::size_t>(panel)].second + QStringLiteral("  ±%1 mm").arg(NumberFormat::number(rangeMm_, 0)));
     for (int h = 0; h < sim::kHandCount; ++h) {
       const auto& trail = trails_[h];
       if (trail.empty()) continue;

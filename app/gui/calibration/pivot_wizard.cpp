@@ -1,5 +1,7 @@
 #include "gui/calibration/pivot_wizard.h"
 
+#include "gui/number_format.h"
+
 #include "tracking/tracker_source.h"
 
 #include <QComboBox>
@@ -17,7 +19,7 @@ class PivotWizard::CollectWizardPage : public QWizardPage {
     setTitle(PivotWizard::tr("Pivot the tool"));
     setSubTitle(PivotWizard::tr("Hold the tip still in the divot and tilt the tool in every direction "
                                 "(at least %1°). Poses are collected automatically.")
-                    .arg(wizard->collector_.options().solve.minSpreadDeg, 0, 'f', 0));
+                    .arg(NumberFormat::number(wizard->collector_.options().solve.minSpreadDeg, 0)));
     progress_ = new QProgressBar(this);
     progress_->setRange(0, wizard->collector_.options().targetPoses);
     spread_ = new QLabel(this);
@@ -33,8 +35,8 @@ class PivotWizard::CollectWizardPage : public QWizardPage {
   void refresh() {
     const calibration::PivotCollector& c = wizard_->collector_;
     progress_->setValue(std::min(c.count(), progress_->maximum()));
-    spread_->setText(c.spreadEnough() ? PivotWizard::tr("Spread %1° — enough").arg(c.spreadDeg(), 0, 'f', 1)
-                                      : PivotWizard::tr("Spread %1° — tilt further").arg(c.spreadDeg(), 0, 'f', 1));
+    spread_->setText(c.spreadEnough() ? PivotWizard::tr("Spread %1° — enough").arg(NumberFormat::number(c.spreadDeg(), 1))
+                                      : PivotWizard::tr("Spread %1° — tilt further").arg(NumberFormat::number(c.spreadDeg(), 1)));
     Q_EMIT completeChanged();
   }
 
@@ -66,16 +68,16 @@ class PivotWizard::ResultWizardPage : public QWizardPage {
     const calibration::PivotResult& r = wizard_->result_;
     summary_->setText(PivotWizard::tr("Tip (tool frame): %1, %2, %3 mm\nPivot (tracker frame): %4, %5, %6 mm\n"
                                       "RMS error %7 mm, largest %8 mm\n%9 poses, spread %10°")
-                          .arg(r.tipOffset.x(), 0, 'f', 2)
-                          .arg(r.tipOffset.y(), 0, 'f', 2)
-                          .arg(r.tipOffset.z(), 0, 'f', 2)
-                          .arg(r.pivot.x(), 0, 'f', 2)
-                          .arg(r.pivot.y(), 0, 'f', 2)
-                          .arg(r.pivot.z(), 0, 'f', 2)
-                          .arg(r.rmsError, 0, 'f', 3)
-                          .arg(r.maxError, 0, 'f', 3)
+                          .arg(NumberFormat::number(r.tipOffset.x(), 2))
+                          .arg(NumberFormat::number(r.tipOffset.y(), 2))
+                          .arg(NumberFormat::number(r.tipOffset.z(), 2))
+                          .arg(NumberFormat::number(r.pivot.x(), 2))
+                          .arg(NumberFormat::number(r.pivot.y(), 2))
+                          .arg(NumberFormat::number(r.pivot.z(), 2))
+                          .arg(NumberFormat::number(r.rmsError, 3))
+                          .arg(NumberFormat::number(r.maxError, 3))
                           .arg(r.poseCount)
-                          .arg(r.spreadDeg, 0, 'f', 1));
+                          .arg(NumberFormat::number(r.spreadDeg, 1)));
     verdict_->setText(PivotWizard::describe(r.status));
     Q_EMIT wizard_->solved(r);
   }

@@ -1,5 +1,6 @@
 #include "gui/calibration/profile_chooser_dialog.h"
 
+#include "gui/number_format.h"
 #include "gui/save_file.h"
 
 #include <QDialogButtonBox>
@@ -63,8 +64,8 @@ void ProfileChooserDialog::reload(qint64 select) {
   for (const assessment::SetupProfileSummary& s : store.list()) {
     QString text = tr("%1 — %2 by %3").arg(s.name, QLocale().toString(s.calibratedAt.toLocalTime(), QLocale::ShortFormat),
                                             s.calibratedBy.isEmpty() ? tr("unknown") : s.calibratedBy);
-    if (s.freMm) text += QStringLiteral(" · ") + tr("FRE %1 mm").arg(*s.freMm, 0, 'f', 2);
-    if (s.treMm) text += QStringLiteral(" · ") + tr("TRE %1 mm").arg(*s.treMm, 0, 'f', 2);
+    if (s.freMm) text += QStringLiteral(" · ") + tr("FRE %1 mm").arg(NumberFormat::number(*s.freMm, 2));
+    if (s.treMm) text += QStringLiteral(" · ") + tr("TRE %1 mm").arg(NumberFormat::number(*s.treMm, 2));
     auto* item = new QListWidgetItem(text, list_);
     item->setData(Qt::UserRole, s.id);
     if (s.id == select) list_->setCurrentItem(item);

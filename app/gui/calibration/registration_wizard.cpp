@@ -1,5 +1,7 @@
 #include "gui/calibration/registration_wizard.h"
 
+#include "gui/number_format.h"
+
 #include "tracking/tracker_source.h"
 
 #include <QComboBox>
@@ -67,12 +69,12 @@ class RegistrationWizard::ResultWizardPage : public QWizardPage {
     QString text = RegistrationWizard::describe(r.status);
     if (r.ok()) {
       text += QLatin1Char('\n') + RegistrationWizard::tr("FRE (fit): %1 mm RMS, %2 mm largest")
-                                      .arg(r.freRms, 0, 'f', 2)
-                                      .arg(r.freMax, 0, 'f', 2);
+                                      .arg(NumberFormat::number(r.freRms, 2))
+                                      .arg(NumberFormat::number(r.freMax, 2));
       text += QLatin1Char('\n') + (r.checkCount > 0 ? RegistrationWizard::tr("TRE (%n check point(s)): %1 mm RMS, %2 mm largest",
                                                                              nullptr, r.checkCount)
-                                                          .arg(r.treRms, 0, 'f', 2)
-                                                          .arg(r.treMax, 0, 'f', 2)
+                                                          .arg(NumberFormat::number(r.treRms, 2))
+                                                          .arg(NumberFormat::number(r.treMax, 2))
                                                     : RegistrationWizard::tr("No check points: the TRE is unknown."));
     }
     label_->setText(text);

@@ -1,5 +1,7 @@
 #include "gui/calibration/tracker_status_widget.h"
 
+#include "gui/number_format.h"
+
 #include "tracking/tracker_source.h"
 
 namespace microsim::gui {
@@ -23,7 +25,7 @@ void TrackerStatusWidget::setSource(tracking::TrackerSource* source) {
 
 QString TrackerStatusWidget::describe(const tracking::TrackerStatus& s) {
   QString line = s.connected ? tr("Tracker connected") : tr("Tracker not connected");
-  line += QStringLiteral(" · ") + tr("%1 Hz").arg(s.rateHz, 0, 'f', 0);
+  line += QStringLiteral(" · ") + tr("%1 Hz").arg(NumberFormat::number(s.rateHz, 0));
   line += QStringLiteral(" · ") + tr("%n dropped", nullptr, static_cast<int>(s.dropped()));
   if (!s.lastError.isEmpty()) line += QStringLiteral(" · ") + s.lastError;
   return line;

@@ -2,7 +2,6 @@
 
 #include "gui/metric_vocabulary.h"
 
-#include <cmath>
 #include <map>
 
 namespace microsim::gui {
@@ -45,18 +44,6 @@ QString FeedbackText::advice(const std::string& key) {
   if (kind == "too_high") return tr("%1 is too high.").arg(MetricVocabulary::metricLabel(metric));
   if (kind == "too_low") return tr("%1 is too low.").arg(MetricVocabulary::metricLabel(metric));
   return QString::fromStdString(key);
-}
-
-QString FeedbackText::value(double v, const std::string& unit, const QString& units) {
-  if (!std::isfinite(v)) return QStringLiteral("–");
-  if (unit == "mm") {
-    if (units == QLatin1String("um")) return tr("%1 µm").arg(v * 1000.0, 0, 'f', 0);
-    return tr("%1 mm").arg(v, 0, 'f', 3);
-  }
-  if (unit == "s") return tr("%1 s").arg(v, 0, 'f', 1);
-  if (unit == "deg") return tr("%1°").arg(v, 0, 'f', 1);
-  if (unit == "count") return QString::number(v, 'f', 0);
-  return QString::number(v, 'g', 3);
 }
 
 }  // namespace microsim::gui

@@ -1,6 +1,7 @@
 #include "gui/pages/results_page.h"
 
 #include "gui/metric_vocabulary.h"
+#include "gui/number_format.h"
 #include "gui/pages/feedback_text.h"
 #include "gui/pages/pierce_image.h"
 #include "gui/settings/tunables.h"
@@ -28,8 +29,12 @@ ResultsPage::ResultsPage(QWidget* parent) : QWidget(parent) {
   metrics_ = new QTableWidget(0, 4, this);
   metrics_->setObjectName(QStringLiteral("metricTable"));
   metrics_->setHorizontalHeaderLabels({tr("Metric"), tr("Value"), tr("Points"), tr("Advice")});
+  // names, values and points on one line each; the advice takes the rest and wraps
+  for (int column = 0; column < 3; ++column)
+    metrics_->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
   metrics_->horizontalHeader()->setSectionResizeMode(3, QHeaderView::Stretch);
   metrics_->verticalHeader()->hide();
+  metrics_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   metrics_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   metrics_->setWordWrap(true);
   pierces_ = new QLabel(this);
@@ -47,7 +52,9 @@ ResultsPage::ResultsPage(QWidget* parent) : QWidget(parent) {
   auto* body = new QHBoxLayout;
   body->addWidget(metrics_, 3);
   auto* right = new QVBoxLayout;
-  right->addWidget(new QLabel(tr("<b>Pierce angles</b> (0° = perpendicular; red entry, blue exit)"), this));
+  auto* pierceCaption = new QLabel(tr("<b>Pierce angles</b> (0° = perpendicular; red entry, blue exit)"), this);
+  pierceCaption->setWordWrap(true);  // longer in German and Spanish than the column is wide
+  right->addWidget(pierceCaption);
   right->addWidget(pierces_, 1);
   body->addLayout(right, 2);
   auto* buttons = new QHBoxLayout;
@@ -65,7 +72,7 @@ ResultsPage::ResultsPage(QWidget* parent) : QWidget(parent) {
   connect(back, &QPushButton::clicked, this, &ResultsPage::back);
 }
 
-QString ResultsPage::scoreText() const { return QString::number(result_.score.score, 'f', 0); }
+QString ResultsPage::scoreText() const { return NumberFormat::number(result_.score.score, 0); }
 
 void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) {
   result_ = result;
@@ -97,11 +104,10 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
     const int row = static_cast<int>(i);
     metrics_->setItem(row, 0, new QTableWidgetItem(MetricVocabulary::metricLabel(m.key)));
     metrics_->setItem(row, 1, new QTableWidgetItem(tr("%1 (target %2)").arg(
-                                  FeedbackText::value(m.value, m.unit, units), FeedbackText::value(m.target, m.unit, units))));
-    metrics_->setItem(row, 2, new QTableWidgetItem(QStringLiteral("%1 %").arg(m.points * 100.0, 0, 'f', 0)));
+                                  NumberFormat::value(m.value, m.unit, units), NumberFormat::value(m.target, m.unit, units))));
+    metrics_->setItem(row, 2, new QTableWidgetItem(NumberFormat::percent(m.points)));
     metrics_->setItem(row, 3, new QTableWidgetItem(m.feedback.empty() ? tr("Good.") : FeedbackText::advice(m.feedback)));
   }
-  metrics_->resizeRowsToContents();
   pierces_->setPixmap(QPixmap::fromImage(drawPierceAngles(result.vessels, result.pierces, QSize(420, 260))));
 }
 

@@ -16,14 +16,39 @@ QVector3D cameraVector(const sim::Vec3& v) {
 MicroscopeCamera::MicroscopeCamera() { reset(sim::CameraDef{}); }
 
 void MicroscopeCamera::reset(const sim::CameraDef& def) {
+  home_ = def;
   target_ = cameraVector(def.target);
-  const QVector3D eye = cameraVector(def.eye);
-  worldUp_ = cameraVector(def.up).normalized();
-  distance_ = std::max(1e-3f, (eye - target_).length());
-  // QQuaternion::fromDirection builds the rotation whose +z is the given direction
-  orientation_ = QQuaternion::fromDirection((eye - target_).normalized(), worldUp_);
+  const QVector3D toward = cameraVector(def.eye) - target_;
+  distance_ = std::max(1e-3f, toward.length());
   fovDeg_ = static_cast<float>(def.fovDeg);
   focus_ = distance_;
+  const QVector3D screenUp = cameraVector(def.up).normalized();
+  const QVector3D direction = toward.normalized();
+  // the microscope is tilted toward the scene's up side; the table is what it tilts over
+  const QVector3D untilted = direction - QVector3D::dotProduct(direction, screenUp) * screenUp;
+  tableNormal_ = untilted.length() > 1e-3f ? untilted.normalized() : direction;
+  look(direction, screenUp);
+}
+
+void MicroscopeCamera::showView(NamedView view) {
+  reset(home_);
+  if (view == NamedView::Microscope) return;
+  const QVector3D n = tableNormal_;
+  const QVector3D homeUp = cameraVector(home_.up);
+  QVector3D back = homeUp - QVector3D::dotProduct(homeUp, n) * n;  // along the table, away from the trainee
+  back = back.length() > 1e-3f ? back.normalized() : up();
+  const float half = std::sqrt(0.5f);
+  switch (view) {
+    case NamedView::Top: look(n, back); break;
+    case NamedView::Oblique: look(half * n - half * back, back); break;
+    case NamedView::Side: look(-back, n); break;
+    case NamedView::Microscope: break;
+  }
+}
+
+void MicroscopeCamera::look(const QVector3D& towardEye, const QVector3D& screenUp) {
+  // QQuaternion::fromDirection builds the rotation whose +z is the given direction
+  orientation_ = QQuaternion::fromDirection(towardEye.normalized(), screenUp).normalized();
 }
 
 QVector3D MicroscopeCamera::forward() const { return orientation_.rotatedVector({0.0f, 0.0f, -1.0f}); }
@@ -32,12 +57,15 @@ QVector3D MicroscopeCamera::up() const { return orientation_.rotatedVector({0.0f
 QVector3D MicroscopeCamera::eye() const { return target_ - distance_ * forward(); }
 
 void MicroscopeCamera::orbit(float yawDeg, float pitchDeg) {
-  const QQuaternion yaw = QQuaternion::fromAxisAndAngle(worldUp_, -yawDeg);
+  const QQuaternion yaw = QQuaternion::fromAxisAndAngle(tableNormal_, -yawDeg);
   QQuaternion next = yaw * orientation_;
   const QQuaternion pitch = QQuaternion::fromAxisAndAngle(next.rotatedVector({1.0f, 0.0f, 0.0f}), -pitchDeg);
   const QQuaternion pitched = pitch * next;
-  // never tip over the pole: the view's up must keep pointing to the scene's up side
-  if (QVector3D::dotProduct(pitched.rotatedVector({0.0f, 1.0f, 0.0f}), worldUp_) > 0.02f) next = pitched;
+  // never tip over the pole (the view's up keeps to the back of the table) nor under the table
+  constexpr float kSlack = 1e-4f;
+  const bool overPole = QVector3D::dotProduct(pitched.rotatedVector({0.0f, 1.0f, 0.0f}), tableNormal_) < -kSlack;
+  const bool underTable = QVector3D::dotProduct(pitched.rotatedVector({0.0f, 0.0f, -1.0f}), tableNormal_) > kSlack;
+  if (!overPole && !underTable) next = pitched;
   orientation_ = next.normalized();
 }
 

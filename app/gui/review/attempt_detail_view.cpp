@@ -1,6 +1,8 @@
 #include "gui/review/attempt_detail_view.h"
 
 #include "gui/metric_vocabulary.h"
+#include "gui/number_format.h"
+#include "gui/review/replay_controls.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_data.h"
 #include "gui/review/review_text.h"
@@ -29,6 +31,8 @@ QTableWidget* makeTable(const QStringList& headers) {
   table->setHorizontalHeaderLabels(headers);
   table->horizontalHeader()->setStretchLastSection(true);
   table->verticalHeader()->hide();
+  // rows as tall as their wrapped text at whatever width the splitter leaves
+  table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   table->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table->setSelectionBehavior(QAbstractItemView::SelectRows);
   return table;
@@ -85,25 +89,20 @@ AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
   leftLayout->addWidget(neverEvents_);
   leftLayout->addWidget(tabs, 1);
 
-  // the replay: the viewport is made on first use (it needs an OpenGL context)
+  // the replay: the viewport and the player's controls are made on first use (the viewport
+  // needs an OpenGL context)
   replayArea_ = new QWidget;
   auto* replayLayout = new QVBoxLayout(replayArea_);
   replayLayout->setContentsMargins(0, 0, 0, 0);
   replay_ = new QPushButton(tr("Replay in 3D"));
-  toEnd_ = new QPushButton(tr("To end"));
-  toEnd_->setEnabled(false);
   replayStatus_ = new QLabel;
   replayStatus_->setWordWrap(true);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(replay_);
-  buttons->addWidget(toEnd_);
   buttons->addWidget(replayStatus_, 1);
   replayLayout->addLayout(buttons);
   replayLayout->addStretch(1);
   connect(replay_, &QPushButton::clicked, this, &AttemptDetailView::startReplay);
-  connect(toEnd_, &QPushButton::clicked, this, [this] {
-    if (player_) player_->skipToEnd();
-  });
 
   auto* splitter = new QSplitter(Qt::Horizontal);
   splitter->addWidget(left);
@@ -137,7 +136,7 @@ void AttemptDetailView::clear() {
   addNote_->setEnabled(false);
   note_->setEnabled(false);
   replay_->setEnabled(false);
-  toEnd_->setEnabled(false);
+  if (controls_) controls_->recordingUnloaded();
   replayStatus_->clear();
 }
 
@@ -178,11 +177,12 @@ void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
   for (int row = 0; row < detail.metrics.size(); ++row) {
     const assessment::StoredMetric& m = detail.metrics[row];
     set(metrics_, row, 0, MetricVocabulary::metricLabel(m.key));
-    set(metrics_, row, 1, ReviewText::value(m.value, m.unit, 2));
-    set(metrics_, row, 2, ReviewText::value(m.target, m.unit, 2));
-    set(metrics_, row, 3, QStringLiteral("± ") + ReviewText::value(m.tolerance, m.unit, 2));
+    const std::string unit = m.unit.toStdString();
+    set(metrics_, row, 1, NumberFormat::value(m.value, unit));
+    set(metrics_, row, 2, NumberFormat::value(m.target, unit));
+    set(metrics_, row, 3, QStringLiteral("± ") + NumberFormat::value(m.tolerance, unit));
     set(metrics_, row, 4, locale.toString(m.weight, 'g', 3));
-    set(metrics_, row, 5, locale.toString(100.0 * m.points, 'f', 0) + QStringLiteral(" %"));
+    set(metrics_, row, 5, NumberFormat::percent(m.points));
     set(metrics_, row, 6, ReviewText::feedback(m.feedback));
   }
   metrics_->resizeColumnsToContents();
@@ -196,7 +196,6 @@ void AttemptDetailView::fillMetrics(const assessment::AttemptDetail& detail) {
 void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
   const std::vector<PierceRow> rows = pierceRows(detail.pierces);
   pierces_->setRowCount(int(rows.size()));
-  const QLocale locale;
   for (int r = 0; r < int(rows.size()); ++r) {
     set(pierces_, r, 0, QString::number(rows[r].pierce + 1));
     int column = 1;
@@ -207,7 +206,7 @@ void AttemptDetailView::fillPierces(const assessment::AttemptDetail& detail) {
         text = std::isnan(v) ? QStringLiteral("–") : (v > 0.5 ? tr("yes") : tr("no"));
       else
         // wall thicknesses are fractions near 2: one decimal would hide the difference
-        text = std::isnan(v) ? QStringLiteral("–") : locale.toString(v, 'f', field.unit == "1" ? 2 : 1);
+        text = NumberFormat::number(v, field.unit == "1" ? 2 : 1);
       set(pierces_, r, column++, text);
     }
   }
@@ -228,14 +227,22 @@ bool AttemptDetailView::startReplay() {
     player_ = new ReplayPlayer;
     viewport_ = new Viewport;
     viewport_->setMinimumSize(320, 240);
+    controls_ = new ReplayControls(player_);
+    controls_->addShortcuts(replayArea_);
     auto* layout = static_cast<QVBoxLayout*>(replayArea_->layout());
+    delete layout->takeAt(1);  // the stretch that kept the button at the top
     layout->insertWidget(1, viewport_, 1);
+    layout->insertWidget(2, controls_);
     connect(player_, &ReplayPlayer::finished, this, [this] {
-      toEnd_->setEnabled(false);
       replayStatus_->setText(tr("Replay finished: %n frame(s).", nullptr, player_->frameCount()));
+    });
+    connect(player_, &ReplayPlayer::playingChanged, this, [this](bool playing) {
+      if (playing) replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+      else if (player_->target() < player_->frameCount()) replayStatus_->setText(tr("Paused."));
     });
   }
   viewport_->setRunner(nullptr);
+  controls_->recordingUnloaded();
   const ReplayLoad loaded = player_->load(scenePath_, recording_);
   switch (loaded) {
     case ReplayLoad::Ok: break;
@@ -244,8 +251,7 @@ bool AttemptDetailView::startReplay() {
     case ReplayLoad::BadScene: replayStatus_->setText(tr("The lesson's scene could not be loaded.")); return false;
   }
   viewport_->setRunner(player_->runner());
-  toEnd_->setEnabled(true);
-  replayStatus_->setText(tr("Replaying %n frame(s)…", nullptr, player_->frameCount()));
+  controls_->recordingLoaded();
   player_->play();
   return true;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // One attempt in detail: its summary, the per-metric table with feedback, the never-events,
 // the per-pierce values (angles, bite, wall), the instructors' annotations (instructors may
-// add one), and a 3D replay of its stored recording in its lesson's scene.
+// add one), and a 3D replay of its stored recording in its lesson's scene, with the player's
+// controls and event timeline (replay_controls.h).
 
 #include "microsim/assessment/storage/history_types.h"
 
@@ -15,6 +16,7 @@ class QTableWidget;
 
 namespace microsim::gui {
 
+class ReplayControls;
 class ReplayPlayer;
 class Viewport;
 
@@ -39,6 +41,8 @@ class AttemptDetailView : public QWidget {
   QPushButton* addNoteButton() const { return addNote_; }
   /// The replay, created on the first "Replay" (null before).
   ReplayPlayer* replayPlayer() const { return player_; }
+  /// The replay's controls and event timeline, created with the player.
+  ReplayControls* replayControls() const { return controls_; }
   Viewport* replayViewport() const { return viewport_; }
   /// Starts the replay as the button does; false (with the reason shown) when it cannot.
   bool startReplay();
@@ -63,7 +67,7 @@ class AttemptDetailView : public QWidget {
   QPlainTextEdit* note_ = nullptr;
   QPushButton* addNote_ = nullptr;
   QPushButton* replay_ = nullptr;
-  QPushButton* toEnd_ = nullptr;
+  ReplayControls* controls_ = nullptr;
   QLabel* replayStatus_ = nullptr;
   QWidget* replayArea_ = nullptr;
   ReplayPlayer* player_ = nullptr;

@@ -5,6 +5,7 @@
 #include <QAreaSeries>
 #include <QChart>
 #include <QLineSeries>
+#include <QLocale>
 #include <QPen>
 #include <QValueAxis>
 
@@ -26,6 +27,14 @@ QValueAxis* attemptAxis(int count) {
   return axis;
 }
 
+// a chart whose axes write numbers as the interface's locale does ("2,5" in German)
+QChart* localisedChart() {
+  auto* chart = new QChart;
+  chart->setLocale(QLocale());
+  chart->setLocalizeNumbers(true);
+  return chart;
+}
+
 void attach(QChart* chart, QAbstractSeries* series, QValueAxis* x, QValueAxis* y) {
   chart->addSeries(series);
   series->attachAxis(x);
@@ -35,7 +44,7 @@ void attach(QChart* chart, QAbstractSeries* series, QValueAxis* x, QValueAxis* y
 }  // namespace
 
 QChart* ReviewCharts::scoreChart(const QList<double>& scores, std::optional<double> passMark) {
-  auto* chart = new QChart;
+  QChart* chart = localisedChart();
   chart->setTitle(tr("Score over attempts"));
   auto* x = attemptAxis(int(scores.size()));
   x->setTitleText(tr("Attempt"));
@@ -69,7 +78,7 @@ QChart* ReviewCharts::scoreChart(const QList<double>& scores, std::optional<doub
 
 QChart* ReviewCharts::metricChart(const QString& title, const QString& unit, const QList<QPointF>& points,
                                   std::optional<TargetBand> band, int attemptCount) {
-  auto* chart = new QChart;
+  QChart* chart = localisedChart();
   const QString symbol = MetricVocabulary::unitSymbol(unit.toStdString());
   chart->setTitle(symbol.isEmpty() ? title : tr("%1 (%2)").arg(title, symbol));
   chart->legend()->hide();

@@ -10,6 +10,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QPixmap>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -98,9 +99,10 @@ bool fillDemoHistory(assessment::HistoryDatabase& db, qint64& instructor) {
 }
 
 // grab() renders the widget itself, so only pending layouts and resizes need to run
-bool saveReviewShot(QWidget& widget, const QString& file, QStringList& written) {
+bool saveReviewShot(QWidget& widget, const QString& file, QStringList& written, const ScreenInspector& inspect) {
   QCoreApplication::sendPostedEvents();
   QCoreApplication::processEvents();
+  if (inspect) inspect(QFileInfo(file).fileName(), widget);
   if (!widget.grab().save(file)) return false;
   written << file;
   return true;
@@ -108,7 +110,7 @@ bool saveReviewShot(QWidget& widget, const QString& file, QStringList& written) 
 
 }  // namespace
 
-QStringList writeReviewScreenshots(const QString& directory) {
+QStringList writeReviewScreenshots(const QString& directory, const ScreenInspector& inspect) {
   QTemporaryDir temp;
   assessment::HistoryDatabase db;
   qint64 instructor = 0;
@@ -123,15 +125,15 @@ QStringList writeReviewScreenshots(const QString& directory) {
     page.show();
     const QDir out(directory);
     const qint64 ana = page.shownTrainees().value(0).id;
-    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-grid.png")), written)) return {};
+    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-grid.png")), written, inspect)) return {};
     page.showTrainee(ana, QStringLiteral("02_needle_entry"));
-    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-history.png")), written)) return {};
+    if (!saveReviewShot(page, out.filePath(QStringLiteral("review-history.png")), written, inspect)) return {};
     const auto attempts = assessment::AttemptStore(db).list({instructor, assessment::Role::Instructor}, ana);
     if (attempts.size() > 2) {
       assessment::AnnotationStore(db).add({instructor, assessment::Role::Instructor}, attempts[2].id,
                   QStringLiteral("Better: the needle now enters almost perpendicular. Watch the bite length."));
       page.showAttempt(attempts[2].id);
-      if (!saveReviewShot(page, out.filePath(QStringLiteral("review-attempt.png")), written)) return {};
+      if (!saveReviewShot(page, out.filePath(QStringLiteral("review-attempt.png")), written, inspect)) return {};
     }
   }
   return written;

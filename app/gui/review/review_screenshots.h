@@ -2,6 +2,8 @@
 // Screenshots of the review screens for the README (`microsim --screenshot DIR` calls this):
 // the page on demo data in a temporary history — three trainees in two groups, attempts
 // scored by the shipped rubrics through the scoring API, an instructor signed in.
+#include "gui/screenshots.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -9,6 +11,7 @@ namespace microsim::gui {
 
 /// Writes review-grid.png, review-history.png and review-attempt.png to `directory`;
 /// returns the files written, empty on failure. Needs a QApplication and a display.
-QStringList writeReviewScreenshots(const QString& directory);
+/// `inspect` sees each screen before it is captured.
+QStringList writeReviewScreenshots(const QString& directory, const ScreenInspector& inspect = {});
 
 }  // namespace microsim::gui

@@ -3,9 +3,6 @@
 #include "gui/metric_vocabulary.h"
 
 #include <QHash>
-#include <QLocale>
-
-#include <cmath>
 
 namespace microsim::gui {
 
@@ -62,15 +59,6 @@ QString ReviewText::status(assessment::AttemptStatus status) {
     case assessment::AttemptStatus::Abandoned: return tr("Abandoned");
   }
   return {};
-}
-
-QString ReviewText::value(double value, const QString& unit, int decimals) {
-  if (std::isnan(value)) return QStringLiteral("–");
-  QString number = QLocale().toString(value, 'f', decimals);
-  const QString symbol = MetricVocabulary::unitSymbol(unit.toStdString());
-  if (symbol.isEmpty()) return number;
-  if (symbol == QStringLiteral("°")) return number + symbol;
-  return number + QLatin1Char(' ') + symbol;
 }
 
 }  // namespace microsim::gui

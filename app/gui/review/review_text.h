@@ -1,8 +1,8 @@
 #pragma once
 // The review screens' words for what the assessment hands out as keys and enums: feedback
-// keys of the rubrics, attempt modes and statuses, values with units. Metric and pierce-field
-// names are the app's one vocabulary (gui/metric_vocabulary.h). Unknown keys come back
-// verbatim, so a newer rubric still shows something readable.
+// keys of the rubrics, attempt modes and statuses. Metric and pierce-field names are the app's
+// one vocabulary (gui/metric_vocabulary.h), values with units gui/number_format.h. Unknown
+// keys come back verbatim, so a newer rubric still shows something readable.
 
 #include "microsim/assessment/storage/history_types.h"
 
@@ -19,8 +19,6 @@ class ReviewText {
   static QString feedback(const QString& key);
   static QString mode(assessment::AttemptMode mode);
   static QString status(assessment::AttemptStatus status);
-  /// A value with its unit, "12.3 mm"; "–" for NaN.
-  static QString value(double value, const QString& unit, int decimals = 1);
 };
 
 }  // namespace microsim::gui

@@ -25,7 +25,9 @@ SettingsDialog::SettingsDialog(QWidget* parent) : QDialog(parent) {
       editor = spin;
     } else {
       auto* combo = new QComboBox(this);
-      for (const Choice& c : t.choices) combo->addItem(c.label, c.value);
+      for (const Choice& c : t.choices) {
+        if (c.isOffered()) combo->addItem(c.label, c.value);
+      }
       combo->setCurrentIndex(std::max(0, combo->findData(current.toString())));
       editor = combo;
     }

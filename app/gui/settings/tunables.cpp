@@ -1,5 +1,6 @@
 #include "gui/settings/tunables.h"
 
+#include "gui/render/stereo_support.h"
 #include "i18n/translations.h"
 
 #include <QSettings>
@@ -22,11 +23,13 @@ std::vector<Tunable> Tunables::all() {
                    tr("Solver iterations per step; 0 keeps the scene's."), false});
   table.push_back({stereoKey(), Type::Choice,
                    {{QStringLiteral("mono"), tr("Mono")},
-                    {QStringLiteral("quad"), tr("Quad-buffer stereo")},
+                    {QStringLiteral("quad"), tr("Quad-buffer stereo"), &quadBufferStereoAvailable},
                     {QStringLiteral("anaglyph"), tr("Anaglyph (red/cyan)")},
                     {QStringLiteral("side"), tr("Side by side")}},
                    0, 0, QStringLiteral("mono"), tr("Stereo"),
-                   tr("Quad-buffer falls back to anaglyph where the display cannot show it."), false});
+                   tr("How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the "
+                      "display has left and right buffers."),
+                   false});
   table.push_back({keyMapKey(), Type::Choice,
                    {{QStringLiteral("qwerty"), tr("QWERTY / QWERTZ (W A S D, Q E)")},
                     {QStringLiteral("azerty"), tr("AZERTY (Z Q S D, A E)")}},
@@ -60,7 +63,8 @@ QVariant checked(const Tunable& t, const QVariant& v) {
     return ok ? QVariant(std::clamp(i, t.minimum, t.maximum)) : t.defaultValue;
   }
   const QString s = v.toString();
-  const bool known = std::any_of(t.choices.begin(), t.choices.end(), [&](const Choice& c) { return c.value == s; });
+  const bool known =
+      std::any_of(t.choices.begin(), t.choices.end(), [&](const Choice& c) { return c.value == s && c.isOffered(); });
   return known ? QVariant(s) : t.defaultValue;
 }
 

@@ -16,13 +16,18 @@ namespace microsim::gui::settings {
 struct Choice {
   QString value;  ///< stored
   QString label;  ///< shown, translated
+  /// Offered only where this returns true (a mode this display can show); null: always.
+  /// A stored value that is not offered reads back as the default.
+  bool (*offered)() = nullptr;
+
+  bool isOffered() const { return offered == nullptr || offered(); }
 };
 
 struct Tunable {
   enum class Type { Choice, Integer };
   QString key;  ///< QSettings key
   Type type = Type::Choice;
-  std::vector<Choice> choices;  ///< Choice only
+  std::vector<Choice> choices;  ///< Choice only, every one the app knows (see Choice::offered)
   int minimum = 0;              ///< Integer only
   int maximum = 0;              ///< Integer only
   QVariant defaultValue;

@@ -24,7 +24,8 @@ struct Instruments {
 constexpr Instruments kInstruments[] = {{sim::Instrument::None, "none"},
                                         {sim::Instrument::Forceps, "forceps"},
                                         {sim::Instrument::NeedleHolder, "needle_holder"},
-                                        {sim::Instrument::Scalpel, "scalpel"}};
+                                        {sim::Instrument::Scalpel, "scalpel"},
+                                        {sim::Instrument::Scissors, "scissors"}};
 
 QJsonValue optionalNumber(const std::optional<double>& v) { return v ? QJsonValue(*v) : QJsonValue(QJsonValue::Null); }
 

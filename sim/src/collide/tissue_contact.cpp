@@ -82,6 +82,12 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   for (auto it = first; it != grid_.end() && it->first == key; ++it) {
     const int f = it->second;
     const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
+    // a face whose box, grown by the radius, misses the node is farther than the radius
+    // along one axis: most of a cell's faces (their boxes were grown by reach + slack) go
+    // here, before the dearer rest-distance and closest-point tests
+    const Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - radius;
+    const Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + radius;
+    if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
     bool eligible = true;
     for (int v : t)
       if (v == node || (rest.col(v) - rest.col(node)).squaredNorm() < self2) eligible = false;

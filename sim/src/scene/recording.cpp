@@ -101,7 +101,7 @@ bool decodeFrame(Decoder& d, InputFrame& frame) {
   for (HandInput& h : frame.hands) {
     const auto instrument = d.get<std::uint8_t>();
     const auto tracked = d.get<std::uint8_t>();
-    if (instrument > static_cast<std::uint8_t>(Instrument::Scalpel) || tracked > 1) return false;
+    if (instrument > static_cast<std::uint8_t>(Instrument::Scissors) || tracked > 1) return false;
     h.instrument = static_cast<Instrument>(instrument);
     h.tracked = tracked == 1;
     for (int i = 0; i < 3; ++i) h.position[i] = d.get<double>();

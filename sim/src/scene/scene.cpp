@@ -3,6 +3,7 @@
 #include "microsim/sim/solve/state_hash.h"
 #include "microsim/sim/suture/suture_coupling.h"
 #include "microsim/sim/tools/jaw_contact.h"
+#include "microsim/sim/tools/microscissors.h"
 #include "microsim/sim/tools/scalpel.h"
 
 #include <algorithm>
@@ -141,16 +142,20 @@ void Scene::placeTools(const InputFrame& frame) {
     const HandInput& in = frame.hands[hs];
     bladeWas_[hs] = blade_[hs];
     blade_[hs].reset();
+    scissorsWas_[hs] = scissors_[hs];
+    scissors_[hs].reset();
     auto& forceps = forceps_[hs];
 
     // a lost hand leaves its tool where it was
     if (!in.tracked) {
       if (forceps) grabDue_[hs] = false;
       if (in.instrument == Instrument::Scalpel) blade_[hs] = bladeWas_[hs];
+      if (in.instrument == Instrument::Scissors) scissors_[hs] = scissorsWas_[hs];
       continue;
     }
     const Eigen::Isometry3d pose = poseOf(in);
     if (in.instrument == Instrument::Scalpel && def_.scalpel) blade_[hs] = pose;
+    if (in.instrument == Instrument::Scissors && def_.scissors) scissors_[hs] = ScissorsPose{pose, in.closure};
     if (!forceps) continue;
     jawsPlaced_[hs] = holdsJaws(in.instrument);
 
@@ -199,6 +204,32 @@ void Scene::grab(int hand) {
   }
   f.holdTissue(faces, def_.tissue.model, state_.x);
   addEvent(SceneEventKind::GrabTissue, hand, f.heldNodes().front(), static_cast<int>(f.heldNodes().size()));
+}
+
+void Scene::cutThread() {
+  const suture::SutureModel& model = *suture_;
+  for (int h = 0; h < kHandCount; ++h) {
+    const std::size_t hs = static_cast<std::size_t>(h);
+    // scissors picked up already closed do not cut: the closing must happen in the hand
+    if (!scissors_[hs] || !scissorsWas_[hs]) continue;
+    const std::vector<tools::ThreadCut> cuts =
+        tools::scissorsCuts(*def_.scissors, scissors_[hs]->pose, scissorsWas_[hs]->closure, scissors_[hs]->closure,
+                            sutureState_.x, sutureState_.alive, model.needleLinks(), model.def().contactRadius);
+    for (const tools::ThreadCut& cut : cuts) {
+      std::vector<int> anchors;
+      for (const suture::Pierce& p : sutureState_.pierces) anchors.push_back(p.node);
+      const std::optional<double> tail = tools::cutEndLength(sutureState_.x, sutureState_.alive, cut, anchors);
+      const bool needleSide = tools::onNeedlePiece(sutureState_.alive, model.swage(), cut.link);
+      sutureState_.alive[static_cast<std::size_t>(cut.link)] = 0;
+      addEvent(SceneEventKind::ThreadCut, h, cut.link, 1);
+      events_.back().value = tail ? *tail : -1.0;
+      const double left = tools::threadOnNeedle(sutureState_.x, sutureState_.alive, model.swage());
+      if (needleSide && left < def_.needle->minTieLength) {
+        addEvent(SceneEventKind::ThreadTooShort, h, cut.link, 0);
+        events_.back().value = left;
+      }
+    }
+  }
 }
 
 void Scene::stepSuture() {
@@ -528,8 +559,9 @@ StepReport Scene::step(const InputFrame& in) {
     if (grabDue_[static_cast<std::size_t>(h)]) grab(h);
   report.times.interactions += now() - t0;
 
-  // suture
+  // suture: scissors cut it, then it steps
   t0 = now();
+  if (suture_ && def_.scissors) cutThread();
   if (suture_) stepSuture();
   report.times.suture = now() - t0;
 

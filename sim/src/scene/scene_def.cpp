@@ -37,6 +37,7 @@ class SceneReader : public JsonReader {
   bool forceps(const json& v, const std::string& path, SceneDef& out);
   bool needle(const json& v, const std::string& path, NeedleDef& out);
   bool scalpel(const json& v, const std::string& path, ScalpelDef& out);
+  bool scissors(const json& v, const std::string& path, ScissorsDef& out);
   bool camera(const json& v, CameraDef& out);
   bool step(const json& v, StepDef& out);
   bool limits(const json& v, TissueLimitsDef& out);
@@ -254,7 +255,8 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
   if (!object(v, path,
               {"shape", "radius", "length", "thread_length", "links", "needle_links",
                "break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
-               "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness", "puncture_force"}))
+               "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness", "puncture_force",
+               "min_tie_length"}))
     return false;
   suture::SutureDef& s = out.suture;
   s.links = 60;
@@ -282,7 +284,8 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
       !optInt(v, path, "iterations", 1, out.step.iterations) ||
       !optPositive(v, path, "coupling_gain", out.coupling.gain) ||
       !optPositive(v, path, "coupling_stiffness", out.coupling.stiffness) ||
-      !optNonNegative(v, path, "puncture_force", out.punctureForce))
+      !optNonNegative(v, path, "puncture_force", out.punctureForce) ||
+      !optNonNegative(v, path, "min_tie_length", out.minTieLength))
     return false;
   if (s.links < s.needleLinks + 1) return fail(SceneErrorKind::InvalidValue, key(path, "links"));
   if (out.coupling.gain > 1.0) return fail(SceneErrorKind::InvalidValue, key(path, "coupling_gain"));
@@ -317,6 +320,18 @@ bool SceneReader::scalpel(const json& v, const std::string& path, ScalpelDef& ou
   return object(v, path, {"blade_length", "blade_height"}) &&
          optPositive(v, path, "blade_length", out.bladeLength) &&
          optPositive(v, path, "blade_height", out.bladeHeight);
+}
+
+bool SceneReader::scissors(const json& v, const std::string& path, ScissorsDef& out) {
+  if (!object(v, path, {"blade_length", "opening_deg", "blade_half_thickness", "cut_at"}) ||
+      !optPositive(v, path, "blade_length", out.bladeLength) ||
+      !optPositive(v, path, "opening_deg", out.openingDeg) ||
+      !optNonNegative(v, path, "blade_half_thickness", out.bladeHalfThickness) ||
+      !optPositive(v, path, "cut_at", out.cutAt))
+    return false;
+  if (out.openingDeg >= 90.0) return fail(SceneErrorKind::InvalidValue, key(path, "opening_deg"));
+  if (out.cutAt > 1.0) return fail(SceneErrorKind::InvalidValue, key(path, "cut_at"));
+  return true;
 }
 
 bool SceneReader::camera(const json& v, CameraDef& out) {
@@ -384,7 +399,7 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
 
   // tools: only what is declared exists
   if (const json* tools = field(doc, "tools")) {
-    if (!object(*tools, "tools", {"forceps", "needle", "scalpel"})) return false;
+    if (!object(*tools, "tools", {"forceps", "needle", "scalpel", "scissors"})) return false;
     if (const json* list = field(*tools, "forceps")) {
       if (!list->is_array() || list->size() > static_cast<std::size_t>(kHandCount))
         return fail(SceneErrorKind::WrongType, "tools.forceps");
@@ -400,6 +415,11 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
       ScalpelDef def;
       if (!scalpel(*v, "tools.scalpel", def)) return false;
       out.scalpel = def;
+    }
+    if (const json* v = field(*tools, "scissors")) {
+      ScissorsDef def;
+      if (!scissors(*v, "tools.scissors", def)) return false;
+      out.scissors = def;
     }
   }
   out.tissue.model.finalize();

@@ -7,6 +7,7 @@
 #include <QAreaSeries>
 #include <QChart>
 #include <QLineSeries>
+#include <QLocale>
 
 #include <gtest/gtest.h>
 
@@ -108,6 +109,19 @@ TEST(ReviewCharts, AMetricNeverMeasuredInTheShownAttemptsHasNoChart) {
   // shown again with no attempts at all: no metric charts remain
   view.setHistory({}, {}, &rubric);
   EXPECT_TRUE(view.metricCharts().isEmpty());
+}
+
+TEST(ReviewCharts, AxesWriteNumbersInTheInterfacesLocale) {
+  const QLocale previous;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  std::unique_ptr<QChart> metric(ReviewCharts::metricChart(QStringLiteral("Bite"), QStringLiteral("mm"),
+                                                           {QPointF(1, 0.35), QPointF(2, 0.42)}, std::nullopt, 2));
+  std::unique_ptr<QChart> score(ReviewCharts::scoreChart({62.5, 80.0}, 70.0));
+  QLocale::setDefault(previous);
+  for (const QChart* chart : {metric.get(), score.get()}) {
+    EXPECT_TRUE(chart->localizeNumbers());
+    EXPECT_EQ(chart->locale().decimalPoint(), QStringLiteral(","));
+  }
 }
 
 }  // namespace

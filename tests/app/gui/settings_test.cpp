@@ -1,3 +1,4 @@
+#include "gui/render/stereo_support.h"
 #include "gui/settings/scene_overrides.h"
 #include "gui/settings/settings_dialog.h"
 #include "gui/settings/tunables.h"
@@ -11,6 +12,7 @@
 #include <QSpinBox>
 #include <QJsonObject>
 
+#include <algorithm>
 #include <variant>
 
 #include <gtest/gtest.h>
@@ -35,7 +37,8 @@ TEST(Settings, TheDialogHasAnEditorForEveryTunable) {
     } else {
       auto* combo = qobject_cast<QComboBox*>(editor);
       ASSERT_NE(combo, nullptr);
-      EXPECT_EQ(combo->count(), static_cast<int>(t.choices.size()));
+      const auto offered = std::count_if(t.choices.begin(), t.choices.end(), [](const Choice& c) { return c.isOffered(); });
+      EXPECT_EQ(combo->count(), static_cast<int>(offered));
       EXPECT_EQ(combo->currentData().toString(), t.defaultValue.toString());
     }
   }
@@ -66,6 +69,31 @@ TEST(Settings, StoresWhatTheDialogShowsAndChecksRanges) {
   EXPECT_EQ(Tunables::value(iterationsKey()).toInt(), 500);
   QSettings().setValue(stereoKey(), QStringLiteral("hologram"));
   EXPECT_EQ(Tunables::value(stereoKey()).toString(), QStringLiteral("mono"));
+  QSettings().clear();
+}
+
+TEST(Settings, OffersOnlyTheStereoModesThisDisplayCanShow) {
+  QSettings().clear();
+  // Xvfb has no stereo visual (and Qt 6.4's QOpenGLWidget no left/right buffers)
+  ASSERT_FALSE(quadBufferStereoAvailable());
+  SettingsDialog dialog;
+  auto* stereo = qobject_cast<QComboBox*>(dialog.editor(stereoKey()));
+  ASSERT_NE(stereo, nullptr);
+  QStringList offered;
+  for (int i = 0; i < stereo->count(); ++i) offered << stereo->itemData(i).toString();
+  EXPECT_EQ(offered, (QStringList{QStringLiteral("mono"), QStringLiteral("anaglyph"), QStringLiteral("side")}));
+  for (int i = 0; i < stereo->count(); ++i)
+    EXPECT_FALSE(stereo->itemText(i).contains(QStringLiteral("Quad"))) << stereo->itemText(i).toStdString();
+
+  // a quad-buffer choice stored on another machine reads back as the default here, and the
+  // dialog shows that default rather than a mode it does not offer
+  QSettings().setValue(stereoKey(), QStringLiteral("quad"));
+  EXPECT_EQ(Tunables::value(stereoKey()).toString(), QStringLiteral("mono"));
+  SettingsDialog again;
+  EXPECT_EQ(qobject_cast<QComboBox*>(again.editor(stereoKey()))->currentData().toString(), QStringLiteral("mono"));
+  // the modes that work are stored as chosen
+  Tunables::setValue(stereoKey(), QStringLiteral("side"));
+  EXPECT_EQ(Tunables::value(stereoKey()).toString(), QStringLiteral("side"));
   QSettings().clear();
 }
 

@@ -5,12 +5,16 @@
 #include "tracking/manual_source.h"
 #include "support/shipped_files.h"
 
+#include <QApplication>
 #include <QImage>
 #include <QSignalSpy>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -226,6 +230,101 @@ TEST(Viewport, KeysDriveTheManualSourceAndF1ShowsTheHelp) {
   EXPECT_TRUE(f.view->helpVisible());
   const QImage help = f.draw();
   EXPECT_NE(before, help);
+}
+
+Eigen::Vector3d viewportTestAxis(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
+
+// the tools placed on the fixture's scene and driven by `source`, through the drawn viewport
+void viewportTestDriveBy(Fixture& f, tracking::ManualSource& source) {
+  source.placeTools(*f.runner.sceneDef());
+  f.view->setManualSource(&source);
+  source.start();
+  f.draw();
+}
+
+// one wheel notch (positive: turned away from the user) with `modifiers`, at the centre
+void viewportTestWheel(QWidget* widget, int notches, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  const QPointF at(widget->width() / 2.0, widget->height() / 2.0);
+  QWheelEvent wheel(at, widget->mapToGlobal(at), QPoint(), QPoint(0, 120 * notches), Qt::NoButton, modifiers,
+                    Qt::NoScrollPhase, false);
+  QApplication::sendEvent(widget, &wheel);
+}
+
+// The mouse is the hand first: a left drag carries the active tip with the cursor, the wheel
+// moves it in depth, a right click closes or opens its jaws and a right drag closes them by
+// degrees; the camera takes Shift: Shift + left drag orbits and leaves the tool where it is.
+TEST(Viewport, TheMouseMovesTheToolInTheViewAndInDepthAndWorksItsJaws) {
+  Fixture f;
+  tracking::ManualSource source;
+  viewportTestDriveBy(f, source);
+  MicroscopeCamera& camera = f.view->camera();
+  const Eigen::Vector3d right = viewportTestAxis(camera.right());
+  const Eigen::Vector3d up = viewportTestAxis(camera.up());
+  const Eigen::Vector3d toward = -viewportTestAxis(camera.forward());
+  const double pixel = camera.mmPerPixel(f.view->height());
+  const auto tip = [&] { return source.current().hand(sim::Hand::Right).position; };
+  const auto closure = [&] { return source.current().hand(sim::Hand::Right).closure; };
+  const Eigen::Vector3d p0 = tip();
+
+  QTest::mousePress(f.view.get(), Qt::LeftButton, {}, QPoint(400, 300));
+  QTest::mouseMove(f.view.get(), QPoint(420, 295));
+  QTest::mouseMove(f.view.get(), QPoint(440, 280));
+  QTest::mouseRelease(f.view.get(), Qt::LeftButton, {}, QPoint(440, 280));
+  EXPECT_LT((tip() - (p0 + pixel * (40.0 * right + 20.0 * up))).norm(), 1e-6);
+
+  const Eigen::Vector3d p1 = tip();
+  viewportTestWheel(f.view.get(), 1);
+  EXPECT_LT((tip() - (p1 - 0.1 * toward)).norm(), 1e-6) << "turned away: deeper";
+  viewportTestWheel(f.view.get(), -3);
+  EXPECT_LT((tip() - (p1 + 0.2 * toward)).norm(), 1e-6);
+
+  EXPECT_EQ(closure(), 0.0);
+  QTest::mouseClick(f.view.get(), Qt::RightButton, {}, QPoint(300, 300));
+  EXPECT_EQ(closure(), 1.0);
+  QTest::mouseClick(f.view.get(), Qt::RightButton, {}, QPoint(300, 300));
+  EXPECT_EQ(closure(), 0.0);
+  QTest::mousePress(f.view.get(), Qt::RightButton, {}, QPoint(300, 200));
+  QTest::mouseMove(f.view.get(), QPoint(300, 230));
+  QTest::mouseMove(f.view.get(), QPoint(300, 275));
+  QTest::mouseRelease(f.view.get(), Qt::RightButton, {}, QPoint(300, 275));
+  EXPECT_NEAR(closure(), 0.5, 1e-9) << "75 of the 150 pixels that close them";
+
+  const Eigen::Vector3d p2 = tip();
+  const QVector3D across = camera.right();
+  QTest::mousePress(f.view.get(), Qt::LeftButton, Qt::ShiftModifier, QPoint(400, 300));
+  QTest::mouseEvent(QTest::MouseMove, f.view.get(), Qt::NoButton, Qt::ShiftModifier, QPoint(460, 300));
+  QTest::mouseRelease(f.view.get(), Qt::LeftButton, Qt::ShiftModifier, QPoint(460, 300));
+  EXPECT_EQ(tip(), p2);
+  EXPECT_NEAR(std::acos(std::clamp(QVector3D::dotProduct(across, camera.right()), -1.0f, 1.0f)) * 180.0 / 3.14159265358979,
+              9.0, 0.01) << "60 pixels at 0.15°/px, about the table's normal";
+  EXPECT_LT(std::abs(QVector3D::dotProduct(camera.right(), camera.tableNormal())), 1e-5f);
+}
+
+// Home and 1 / 2 / 3 show the named views whatever the camera did; the view basis the keys
+// move the tool in follows.
+TEST(Viewport, HomeAndTheNumberKeysShowTheNamedViews) {
+  Fixture f;
+  tracking::ManualSource source;
+  viewportTestDriveBy(f, source);
+  f.view->setFocus();
+  MicroscopeCamera& camera = f.view->camera();
+  const QVector3D home = camera.eye();
+  QTest::keyClick(f.view.get(), Qt::Key_1);
+  EXPECT_LT((camera.forward() + camera.tableNormal()).length(), 1e-5f);
+  QTest::keyClick(f.view.get(), Qt::Key_3);
+  EXPECT_LT(std::abs(QVector3D::dotProduct(camera.forward(), camera.tableNormal())), 1e-5f);
+  // in the side view W lifts the tool off the table
+  const double height = source.current().hand(sim::Hand::Right).position.z();
+  QTest::keyClick(f.view.get(), Qt::Key_W);
+  EXPECT_NEAR(source.current().hand(sim::Hand::Right).position.z() - height, tracking::ManualSource::kStepMm, 1e-6);
+  QTest::keyClick(f.view.get(), Qt::Key_2);
+  EXPECT_NEAR(QVector3D::dotProduct(camera.forward(), camera.tableNormal()), -std::sqrt(0.5f), 1e-5f);
+  camera.orbit(20.0f, 5.0f);
+  QTest::keyClick(f.view.get(), Qt::Key_Home);
+  EXPECT_LT((camera.eye() - home).length(), 1e-4f);
+  const QImage microscope = f.draw();
+  QTest::keyClick(f.view.get(), Qt::Key_3);
+  EXPECT_NE(f.draw(), microscope);
 }
 
 }  // namespace

@@ -18,6 +18,19 @@ TEST(Translations, ChoosesTheSettingThenTheSystemThenEnglish) {
   EXPECT_EQ(chooseLanguage(QStringLiteral("xx"), QLocale(QLocale::Japanese)).toStdString(), "en");
 }
 
+TEST(Translations, NumbersFollowTheInterfaceLanguageAndKeepTheSystemsRegion) {
+  // German on an English system writes German numbers
+  const QLocale german = localeFor(QStringLiteral("de"), QLocale(QLocale::English, QLocale::UnitedStates));
+  EXPECT_EQ(german.language(), QLocale::German);
+  EXPECT_EQ(german.toString(26.9, 'f', 1).toStdString(), "26,9");
+  EXPECT_EQ(localeFor(QStringLiteral("es"), QLocale(QLocale::German)).toString(0.3, 'f', 1).toStdString(), "0,3");
+  EXPECT_EQ(localeFor(QStringLiteral("en"), QLocale(QLocale::German)).toString(26.9, 'f', 1).toStdString(), "26.9");
+  // the system's own region when it speaks the language
+  const QLocale swiss(QLocale::German, QLocale::Switzerland);
+  EXPECT_EQ(localeFor(QStringLiteral("de"), swiss), swiss);
+  EXPECT_EQ(localeFor(QStringLiteral("de"), swiss).toString(1234.5, 'f', 1), swiss.toString(1234.5, 'f', 1));
+}
+
 TEST(Translations, ShippedCataloguesLoadFromResources) {
   for (const QString& language : availableLanguages()) {
     if (language == QLatin1String("en")) continue;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
 namespace microsim::tracking {
 namespace {
 
@@ -58,7 +60,7 @@ TEST(ManualSource, KeysMoveTheActiveTipByTheDocumentedStepInTheView) {
   // R puts the tools back; unknown keys are not taken
   EXPECT_TRUE(source.handleKey(Qt::Key_R, Qt::NoModifier, true, false));
   EXPECT_EQ(lastFrame(frames).hands, start.hands);
-  EXPECT_FALSE(source.handleKey(Qt::Key_Z, Qt::NoModifier, true, false));
+  EXPECT_FALSE(source.handleKey(Qt::Key_P, Qt::NoModifier, true, false));
 }
 
 TEST(ManualSource, NothingIsEmittedWhenStopped) {
@@ -88,6 +90,89 @@ TEST(ManualSource, ToolsStartBesideTheCameraTarget) {
   const sim::Vec3 back = f.hand(sim::Hand::Right).orientation * sim::Vec3::UnitX();
   EXPECT_GT(back.x(), 0.5);
   EXPECT_GT(back.z(), 0.5);
+}
+
+// A held needle's circle, 0.8 mm about a centre 0.5 mm ahead of the right tool's tip and
+// 0.3 mm to its side: X turns the tool so that every point of the circle (the needle's tip
+// among them) stays on the circle, forward by the step; Z turns it back; without a held
+// needle neither moves anything.
+TEST(ManualSource, XAndZTurnTheToolAlongTheHeldNeedlesCircle) {
+  ManualSource source;
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  source.start();
+  const sim::HandInput before = source.current().hand(sim::Hand::Right);
+  EXPECT_TRUE(source.handleKey(Qt::Key_X, Qt::NoModifier, true, false));
+  EXPECT_EQ(source.current().hand(sim::Hand::Right), before) << "no needle held: nothing turns";
+  EXPECT_FALSE(source.turnAlongNeedle(10.0));
+
+  HeldNeedleArc arc;
+  arc.centre = Eigen::Vector3d(0.5, 0.3, 0.0);
+  arc.axis = Eigen::Vector3d(0.0, 0.6, 0.8);
+  arc.radius = 0.8;
+  source.setHeldNeedle(sim::Hand::Right, arc);
+  const auto scene = [](const sim::HandInput& h, const Eigen::Vector3d& inTool) -> Eigen::Vector3d { return h.position + h.orientation * inTool; };
+  const Eigen::Vector3d centre = scene(before, arc.centre);
+  const Eigen::Vector3d axis = before.orientation * arc.axis;
+  // a point of the needle: on the circle, in the tool frame
+  const Eigen::Vector3d radial = arc.axis.unitOrthogonal();
+  const Eigen::Vector3d needlePoint = arc.centre + arc.radius * radial;
+  const Eigen::Vector3d p0 = scene(before, needlePoint);
+
+  EXPECT_TRUE(source.handleKey(Qt::Key_X, Qt::NoModifier, true, false));
+  const sim::HandInput turned = lastFrame(frames).hand(sim::Hand::Right);
+  EXPECT_LT((scene(turned, arc.centre) - centre).norm(), 1e-12) << "the circle's centre stays";
+  EXPECT_LT((turned.orientation * arc.axis - axis).norm(), 1e-12) << "so does its axis";
+  const Eigen::Vector3d p1 = scene(turned, needlePoint);
+  EXPECT_NEAR((p1 - centre).norm(), arc.radius, 1e-12);
+  EXPECT_NEAR((p1 - centre).dot(axis), (p0 - centre).dot(axis), 1e-12);
+  const double swept = std::atan2(((p0 - centre).cross(p1 - centre)).dot(axis), (p0 - centre).dot(p1 - centre));
+  EXPECT_NEAR(swept * 180.0 / std::numbers::pi, ManualSource::kArcStepDeg, 1e-9) << "forward about the axis";
+
+  EXPECT_TRUE(source.handleKey(Qt::Key_Z, Qt::ShiftModifier, true, false));
+  const Eigen::Vector3d p2 = scene(lastFrame(frames).hand(sim::Hand::Right), needlePoint);
+  const double back = std::atan2(((p1 - centre).cross(p2 - centre)).dot(axis), (p1 - centre).dot(p2 - centre));
+  EXPECT_NEAR(back * 180.0 / std::numbers::pi, -ManualSource::kFineArcStepDeg, 1e-9);
+  sim::InputRejection why{};
+  EXPECT_TRUE(sim::validateFrame(lastFrame(frames), why));
+}
+
+TEST(ManualSource, CAndVCloseAndOpenTheJawsByStepsWithinTheirRange) {
+  ManualSource source;
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  source.start();
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(source.handleKey(Qt::Key_C, Qt::NoModifier, true, k > 0));
+  EXPECT_NEAR(lastFrame(frames).hand(sim::Hand::Right).closure, 3 * ManualSource::kClosureStep, 1e-12);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Left).closure, 0.0);
+  EXPECT_TRUE(source.handleKey(Qt::Key_V, Qt::NoModifier, true, false));
+  EXPECT_NEAR(lastFrame(frames).hand(sim::Hand::Right).closure, 2 * ManualSource::kClosureStep, 1e-12);
+  for (int k = 0; k < 20; ++k) source.handleKey(Qt::Key_C, Qt::NoModifier, true, true);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Right).closure, 1.0);
+  for (int k = 0; k < 20; ++k) source.handleKey(Qt::Key_V, Qt::NoModifier, true, true);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Right).closure, 0.0);
+  source.setClosure(0.55);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Right).closure, 0.55);
+}
+
+// The working volume is the scene's tissue and tools with a margin: a tip driven far off stops
+// at its face, and comes back from there at once.
+TEST(ManualSource, TipsStayInTheWorkingVolume) {
+  sim::SceneDef def;
+  def.camera.eye = sim::Vec3(0.0, 0.0, 40.0);
+  def.tissue.model.addNode(sim::Vec3(-3.0, -0.5, -0.5), 1.0);
+  def.tissue.model.addNode(sim::Vec3(3.0, 0.5, 0.5), 1.0);
+  ManualSource source;
+  source.placeTools(def);
+  source.setViewBasis(Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ());
+  const Eigen::AlignedBox3d& box = source.workingVolume();
+  EXPECT_LT((box.min() - sim::Vec3(-4.5, -2.0, -2.0)).norm(), 1e-12);
+  EXPECT_LT((box.max() - sim::Vec3(4.5, 2.0, 2.1)).norm(), 1e-12) << "the tools start 0.6 mm up";
+  source.start();
+  source.moveInView(100.0, -100.0);
+  source.moveInDepth(100.0);
+  const sim::Vec3 corner = source.current().hand(sim::Hand::Right).position;
+  EXPECT_LT((corner - sim::Vec3(4.5, -2.0, 2.1)).norm(), 1e-12);
+  source.moveInView(-0.5, 0.0);
+  EXPECT_NEAR(source.current().hand(sim::Hand::Right).position.x(), 4.0, 1e-12);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ enum class Instrument : std::uint8_t {
   Forceps = 1,       ///< micro-forceps: grabs tissue, needle and suture
   NeedleHolder = 2,  ///< holds the needle (a forceps with a needle grip)
   Scalpel = 3,
+  Scissors = 4,      ///< microscissors: cut the thread where they close (tools/microscissors.h)
 };
 
 struct HandInput {

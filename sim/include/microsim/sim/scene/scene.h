@@ -119,6 +119,15 @@ class Scene {
     const auto& f = forceps_[static_cast<std::size_t>(hand)];
     return f ? &*f : nullptr;
   }
+  /// Where a hand's microscissors are and how closed, while it holds them (the scene
+  /// declares scissors and the hand is tracked or was last seen holding them); none otherwise.
+  struct ScissorsPose {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    double closure = 0.0;
+  };
+  const std::optional<ScissorsPose>& scissors(Hand hand) const {
+    return scissors_[static_cast<std::size_t>(hand)];
+  }
   /// The controls the last tissue solve had.
   const SpringControls& controls() const { return controls_; }
 
@@ -135,6 +144,8 @@ class Scene {
   void placeTools(const InputFrame& frame);
   void grab(int hand);
   void stepSuture();
+  /// Microscissors closing this step cut the thread (tools/microscissors.h).
+  void cutThread();
   void applyCrossings();
   /// `cutting`: the tip moves point first (a tip going back follows its channel: no dent)
   void takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting);
@@ -180,6 +191,8 @@ class Scene {
   std::array<bool, kHandCount> grabDue_{};
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> blade_;     // this step
   std::array<std::optional<Eigen::Isometry3d>, kHandCount> bladeWas_;  // last step
+  std::array<std::optional<ScissorsPose>, kHandCount> scissors_;     // this step
+  std::array<std::optional<ScissorsPose>, kHandCount> scissorsWas_;  // last step
   std::unique_ptr<SceneCollision> collision_;
 
   std::vector<std::uint8_t> overstretched_;  ///< per link: above the limit at the last check

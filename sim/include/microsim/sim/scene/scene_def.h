@@ -10,7 +10,7 @@
 //               "relaxation", "cutout", "momentum", "damping", "active_region",
 //               "linear_tolerance"},
 //    "tools": {"forceps": [FORCEPS, ...] (at most one per hand),
-//              "needle": NEEDLE, "scalpel": SCALPEL},          each optional
+//              "needle": NEEDLE, "scalpel": SCALPEL, "scissors": SCISSORS}, each optional
 //    "camera": {"eye", "target", "up" ([x,y,z] mm), "fov_deg"},
 //    "step": {"rate_hz" (100), "budget_ms" (8)},
 //    "tissue": {"overstretch", "tear"},       stretch limits (l − r)/r, each off unless given:
@@ -37,7 +37,10 @@
 //    (mm), "links", "needle_links", "break_stretch", "contact_radius", "friction", "drag",
 //    "position" ([x,y,z] mm) and "rotation" ([w,x,y,z], needle frame → scene) of the needle
 //    at the start, "solver" ("direct"|"ftl"), "substeps", "iterations", "coupling_gain",
-//    "coupling_stiffness" (g/s², suture_coupling.h)}
+//    "coupling_stiffness" (g/s², suture_coupling.h), "puncture_force" (µN, 0),
+//    "min_tie_length" (mm, 3)}
+// SCISSORS: {"blade_length" (mm, 0.6), "opening_deg" (25), "blade_half_thickness" (mm, 0.03),
+//    "cut_at" (closure, 0.9)}: microscissors for any hand whose instrument is Scissors
 // SCALPEL: {"blade_length" (mm, 2), "blade_height" (mm, 0.5)}
 //
 // Loading never throws and never prints; errors are SceneError (spring_scene.h) with the
@@ -112,6 +115,19 @@ struct NeedleDef {
   /// (tools/needle_indent.h). 0 = a crossing pierces at once (also with solvers that take no
   /// soft terms).
   double punctureForce = 0.0;
+  /// mm: the least free thread the needle must keep to tie the next instrument knot (two
+  /// turns around a 0.2 mm jaw, ≈ 1.3 mm, and the reach from the stitch to the jaw); a cut
+  /// that leaves less is reported (SceneEventKind::ThreadTooShort)
+  double minTieLength = 3.0;
+};
+
+/// Microscissors (tools/microscissors.h): two straight blades hinged at `bladeLength` from
+/// the tip, cutting the thread where they close.
+struct ScissorsDef {
+  double bladeLength = 0.6;         ///< mm, tip to pivot
+  double openingDeg = 25.0;         ///< each blade's angle off the axis when open (degrees)
+  double bladeHalfThickness = 0.03; ///< mm, half the blades' thickness out of their plane
+  double cutAt = 0.9;               ///< closure (0..1) whose crossing upwards cuts
 };
 
 /// A scalpel blade: the rectangle [0, length] × {0} × [0, height] of the tool frame; the
@@ -158,6 +174,7 @@ struct SceneDef {
   std::array<std::optional<ForcepsDef>, kHandCount> forceps;  ///< by hand
   std::optional<NeedleDef> needle;
   std::optional<ScalpelDef> scalpel;
+  std::optional<ScissorsDef> scissors;
   TissueSolverDef solver;
   CameraDef camera;
   StepDef step;

@@ -41,6 +41,12 @@ enum class SceneEventKind : std::uint8_t {
   /// a forceps (`hand`) closed on nothing: no suture, and no tissue it may take, lay between
   /// its jaws
   GraspEmpty,
+  /// microscissors (`hand`) cut the thread at link `index`; `value` = the cut-end length (mm,
+  /// tools/microscissors.h), −1 when neither side of the cut is anchored in the tissue
+  ThreadCut,
+  /// after a cut (`hand`, `index` = the link), the needle keeps less free thread than
+  /// NeedleDef::minTieLength: `value` = what it keeps (mm)
+  ThreadTooShort,
 };
 
 /// Which surface of a vessel a pierce crossed.
@@ -75,6 +81,7 @@ struct SceneEvent {
   int hand = -1;      ///< 0 left, 1 right, -1 none
   int index = -1;     ///< see the kind
   int count = 0;      ///< see the kind
+  double value = 0.0; ///< see the kind (a length or a force, in the units above)
   InputRejection rejection = InputRejection::NonFinite;  ///< InputRejected only
 };
 

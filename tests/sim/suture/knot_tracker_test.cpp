@@ -1,0 +1,172 @@
+#include "microsim/sim/suture/knot_tracker.h"
+
+#include "sim/suture/knot_geometry.h"
+
+#include <gtest/gtest.h>
+
+namespace microsim::sim::suture {
+namespace {
+
+using knot_test::ThreadBuilder;
+
+// every link of `b` stretched by `stretch`
+std::vector<double> stretched(const ThreadBuilder& b, double stretch) {
+  return std::vector<double>(static_cast<std::size_t>(b.points().cols() - 1), stretch);
+}
+
+std::vector<KnotEvent> ofKind(const std::vector<KnotEvent>& events, KnotEventKind kind) {
+  std::vector<KnotEvent> out;
+  for (const KnotEvent& e : events) {
+    if (e.kind == kind) {
+      out.push_back(e);
+    }
+  }
+  return out;
+}
+
+// a half knot round the stitch tied and pulled to 0.3 % stretch for four steps; the next step
+int tightenHalfKnot(KnotTracker& tracker) {
+  const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
+  for (int step = 0; step < 4; ++step) {
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  return 4;
+}
+
+// a half knot round the stitch, held still while its ends are pulled from 0 to 0.4 % stretch
+TEST(KnotTracker, ThrowFormsThenTightensOnce) {
+  KnotTracker tracker;
+  const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
+  for (int step = 0; step < 10; ++step) {
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.0005 * step));
+  }
+  const auto formed = ofKind(tracker.events(), KnotEventKind::ThrowFormed);
+  ASSERT_EQ(formed.size(), 1U);
+  EXPECT_EQ(formed[0].step, 1);  // read at step 0, confirmed by a second reading
+  EXPECT_EQ(formed[0].throwIndex, 0);
+  EXPECT_EQ(formed[0].handedness, Handedness::Right);
+  EXPECT_EQ(formed[0].wraps, 1);
+
+  const auto tight = ofKind(tracker.events(), KnotEventKind::KnotTightened);
+  ASSERT_EQ(tight.size(), 1U);
+  EXPECT_EQ(tight[0].step, 4);  // the first step at 0.2 % stretch
+  EXPECT_EQ(tight[0].type, KnotType::SingleThrow);
+  EXPECT_EQ(tight[0].throws, 1);
+  EXPECT_DOUBLE_EQ(tight[0].tension, KnotTrackerDef{}.axialStiffness * 0.002);
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotSlipped).empty());
+  EXPECT_TRUE(tracker.tightened());
+}
+
+TEST(KnotTracker, AKnotPulledApartSlips) {
+  // tied and pulled tight, then the tail strand unwinds from the needle strand
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
+  ASSERT_TRUE(tracker.tightened());
+  for (int k = 1; k <= 10; ++k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0 - 0.1 * k, false);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  // once: as it unwinds its crossings run along the thread (Sliding) before the last goes; a
+  // slipped knot is not tightened again while its ends stay pulled
+  const auto slipped = ofKind(tracker.events(), KnotEventKind::KnotSlipped);
+  ASSERT_EQ(slipped.size(), 1U);
+  EXPECT_EQ(ofKind(tracker.events(), KnotEventKind::KnotTightened).size(), 1U);
+  EXPECT_FALSE(tracker.tightened());
+  EXPECT_EQ(tracker.reading().type, KnotType::None);
+}
+
+TEST(KnotTracker, AKnotWhoseThrowIsLostSlips) {
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
+  ASSERT_TRUE(tracker.tightened());
+  // the tail strand pulled out of the twist at once
+  for (int k = 0; k < 3; ++k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(0.0, false);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  const auto slipped = ofKind(tracker.events(), KnotEventKind::KnotSlipped);
+  ASSERT_EQ(slipped.size(), 1U);
+  EXPECT_EQ(slipped[0].cause, KnotSlipCause::StructureLost);
+  EXPECT_EQ(slipped[0].step, 5);  // read at 4, confirmed at 5
+  EXPECT_EQ(slipped[0].type, KnotType::None);
+  EXPECT_EQ(slipped[0].throws, 0);
+  EXPECT_DOUBLE_EQ(slipped[0].tension, KnotTrackerDef{}.axialStiffness * 0.003);
+}
+
+TEST(KnotTracker, ThrowsSlidingWhileTheTensionRisesSlip) {
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
+  ASSERT_TRUE(tracker.tightened());
+  // the thread runs through the knot (the twist moves 0.05 mm up the strands a step) while the
+  // ends are pulled harder
+  for (int k = 1; k <= 10; ++k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0, false, false, 0.05 * k);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003 + 0.0001 * k));
+  }
+  const auto slipped = ofKind(tracker.events(), KnotEventKind::KnotSlipped);
+  ASSERT_EQ(slipped.size(), 1U);
+  EXPECT_EQ(slipped[0].cause, KnotSlipCause::Sliding);
+  EXPECT_EQ(slipped[0].type, KnotType::SingleThrow);
+  EXPECT_GT(slipped[0].slide, KnotTrackerDef{}.slipDistance);
+  EXPECT_LT(slipped[0].slide, 0.35);
+}
+
+TEST(KnotTracker, AKnotMovedAlongTheThreadWithItsEndsLetGoDoesNotSlip) {
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
+  ASSERT_TRUE(tracker.tightened());
+  // the same motion, the ends slack: that is the knot being laid, not slipping
+  for (int k = 1; k <= 10; ++k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0, false, false, 0.05 * k);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.001));
+  }
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotSlipped).empty());
+}
+
+TEST(KnotTracker, ThrowsFormOneAfterAnother) {
+  KnotTracker tracker;
+  int step = 0;
+  const ThreadBuilder first = knot_test::throwsInARow({{1, true}});
+  for (; step < 3; ++step) {
+    tracker.update(step, first.points(), {}, {});
+  }
+  const ThreadBuilder square = knot_test::throwsInARow({{1, true}, {1, false}});
+  for (; step < 6; ++step) {
+    tracker.update(step, square.points(), {}, {});
+  }
+  const auto formed = ofKind(tracker.events(), KnotEventKind::ThrowFormed);
+  ASSERT_EQ(formed.size(), 2U);
+  EXPECT_EQ(formed[0].throwIndex, 0);
+  EXPECT_EQ(formed[0].handedness, Handedness::Right);
+  EXPECT_EQ(formed[1].throwIndex, 1);
+  EXPECT_EQ(formed[1].handedness, Handedness::Left);
+  EXPECT_EQ(formed[1].type, KnotType::Square);
+  EXPECT_EQ(tracker.reading().type, KnotType::Square);
+  // no tension was given: nothing was tightened
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotTightened).empty());
+}
+
+TEST(KnotTracker, AThreadThatHasNotMovedIsNotReadAgain) {
+  KnotTracker tracker;
+  const ThreadBuilder b = knot_test::throwsInARow({{1, true}, {1, false}});
+  Points x = b.points();
+  for (int step = 0; step < 10; ++step) {
+    // a jitter well below the tolerance
+    x(0, step % x.cols()) += 0.1 * KnotTrackerDef{}.moveTolerance;
+    tracker.update(step, x, {}, {});
+  }
+  EXPECT_EQ(tracker.readings(), 1);
+  EXPECT_EQ(tracker.reading().type, KnotType::Square);
+
+  // moved as a whole, it is read every step, but from the last clear picture: no new search
+  for (int step = 10; step < 20; ++step) {
+    x.row(0).array() += 0.05;
+    tracker.update(step, x, {}, {});
+  }
+  EXPECT_EQ(tracker.readings(), 11);
+  EXPECT_EQ(tracker.searches(), 1);
+  EXPECT_EQ(tracker.reading().type, KnotType::Square);
+}
+
+}  // namespace
+}  // namespace microsim::sim::suture
