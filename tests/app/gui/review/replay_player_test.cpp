@@ -9,6 +9,7 @@
 #include "gui/review/replay_timeline.h"
 #include "gui/review/review_page.h"
 #include "gui/simulation_runner.h"
+#include "gui/viewport.h"
 #include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/people_store.h"
 #include "microsim/assessment/storage/score_store.h"
