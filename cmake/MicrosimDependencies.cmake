@@ -6,6 +6,12 @@ find_package(Qt6 6.4 REQUIRED COMPONENTS Core Sql Gui Widgets OpenGL OpenGLWidge
 find_package(Threads REQUIRED)
 # OpenIGTLink (Debian libopenigtlink-dev) has no imported target: OpenIGTLink_INCLUDE_DIRS, _LIBRARIES
 find_package(OpenIGTLink REQUIRED PATHS /usr/lib/openigtlink)
+# 6-DoF input devices people own: game controllers through SDL2 (libsdl2-dev, a CMake
+# package), 3D mice through libspnav (libspnav-dev: a header and libspnav.so in /usr/lib, no
+# CMake or pkg-config file)
+find_package(SDL2 REQUIRED CONFIG)
+find_path(SPNAV_INCLUDE_DIR spnav.h REQUIRED)
+find_library(SPNAV_LIBRARY NAMES spnav REQUIRED)
 
 if(MICROSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)

@@ -65,4 +65,7 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6sql6-sqlite")
 # PostgreSQL histories, Qt's own German and Spanish texts, hardware OpenGL drivers
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libqt6sql6-psql, qt6-translations-l10n, libgl1-mesa-dri")
+# the 3D mouse's daemon: libspnav (found by dpkg-shlibdeps like SDL2 and Qt) talks to
+# spacenavd, which only a user with a 3D mouse needs
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "spacenavd")
 include(CPack)

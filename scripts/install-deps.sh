@@ -15,8 +15,9 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6sql6-sqlite libqt6sql6-psql qt6-charts-dev
   qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools linguist-qt6 qt6-svg-dev qt6-translations-l10n
   libgl1-mesa-dev libgl1-mesa-dri libglx-mesa0
-  # trackers
-  libopenigtlink-dev
+  # trackers, and the 6-DoF devices people own: 3D mice (libspnav; the user runs spacenavd) and
+  # game controllers (SDL2)
+  libopenigtlink-dev libspnav-dev libsdl2-dev
   # tests: GoogleTest, a virtual display for GUI tests, a PostgreSQL server for the storage tests
   libgtest-dev libgmock-dev xvfb xauth postgresql
   # the Debian package (scripts/package-test.sh): cpack's dependency derivation (dpkg-shlibdeps),

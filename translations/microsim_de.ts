@@ -1427,6 +1427,30 @@
         <source>Calibrated tools</source>
         <translation>Kalibrierte Instrumente</translation>
     </message>
+    <message>
+        <source>Use a 3D mouse (spacenavd)</source>
+        <translation>3D-Maus verwenden (spacenavd)</translation>
+    </message>
+    <message>
+        <source>3D mouse</source>
+        <translation>3D-Maus</translation>
+    </message>
+    <message>
+        <source>3D mouse connected: push or turn the cap to move the active forceps; the left button closes the jaws, the right one switches the hand.</source>
+        <translation>3D-Maus verbunden: die Kappe schieben oder drehen, um die aktive Pinzette zu bewegen; die linke Taste schließt die Branchen, die rechte wechselt die Hand.</translation>
+    </message>
+    <message>
+        <source>Use a game controller</source>
+        <translation>Gamecontroller verwenden</translation>
+    </message>
+    <message>
+        <source>Game controller</source>
+        <translation>Gamecontroller</translation>
+    </message>
+    <message>
+        <source>%1 connected: sticks move the active forceps, the triggers close the jaws, the shoulder buttons choose the hand.</source>
+        <translation>%1 verbunden: die Sticks bewegen die aktive Pinzette, die Trigger schließen die Branchen, die Schultertasten wählen die Hand.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::ClosureDialog</name>
@@ -3193,6 +3217,21 @@ RMS-Fehler %7 mm, größter %8 mm
     </message>
 </context>
 <context>
+    <name>microsim::tracking::GamepadSource</name>
+    <message>
+        <source>The game controller cannot be read: SDL did not start (%1).</source>
+        <translation>Der Gamecontroller kann nicht gelesen werden: SDL ist nicht gestartet (%1).</translation>
+    </message>
+    <message>
+        <source>No game controller found: connect one (USB or Bluetooth) and try again.</source>
+        <translation>Kein Gamecontroller gefunden: einen anschließen (USB oder Bluetooth) und erneut versuchen.</translation>
+    </message>
+    <message>
+        <source>The game controller %1 was disconnected.</source>
+        <translation>Der Gamecontroller %1 wurde getrennt.</translation>
+    </message>
+</context>
+<context>
     <name>microsim::tracking::ManualSource</name>
     <message>
         <source>Tab — switch hand</source>
@@ -3269,6 +3308,17 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
         <translation>Pos1 — Mikroskopansicht; 1 / 2 / 3 — Ansicht von oben / schräg / von der Seite</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::tracking::SpacenavSource</name>
+    <message>
+        <source>No 3D mouse: spacenavd, the 3D mouse's daemon, is not running or cannot be reached (install and start spacenavd, then try again).</source>
+        <translation>Keine 3D-Maus: spacenavd, der Dienst der 3D-Maus, läuft nicht oder ist nicht erreichbar (spacenavd installieren und starten, dann erneut versuchen).</translation>
+    </message>
+    <message>
+        <source>The 3D mouse's daemon (spacenavd) closed the connection.</source>
+        <translation>Der Dienst der 3D-Maus (spacenavd) hat die Verbindung geschlossen.</translation>
     </message>
 </context>
 </TS>

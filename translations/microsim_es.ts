@@ -1427,6 +1427,30 @@
         <source>Calibrated tools</source>
         <translation>Instrumentos calibrados</translation>
     </message>
+    <message>
+        <source>Use a 3D mouse (spacenavd)</source>
+        <translation>Usar un ratón 3D (spacenavd)</translation>
+    </message>
+    <message>
+        <source>3D mouse</source>
+        <translation>Ratón 3D</translation>
+    </message>
+    <message>
+        <source>3D mouse connected: push or turn the cap to move the active forceps; the left button closes the jaws, the right one switches the hand.</source>
+        <translation>Ratón 3D conectado: empuje o gire la tapa para mover la pinza activa; el botón izquierdo cierra las ramas, el derecho cambia de mano.</translation>
+    </message>
+    <message>
+        <source>Use a game controller</source>
+        <translation>Usar un mando de juego</translation>
+    </message>
+    <message>
+        <source>Game controller</source>
+        <translation>Mando de juego</translation>
+    </message>
+    <message>
+        <source>%1 connected: sticks move the active forceps, the triggers close the jaws, the shoulder buttons choose the hand.</source>
+        <translation>%1 conectado: las palancas mueven la pinza activa, los gatillos cierran las ramas, los botones superiores eligen la mano.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::ClosureDialog</name>
@@ -3193,6 +3217,21 @@ Error RMS %7 mm, máximo %8 mm
     </message>
 </context>
 <context>
+    <name>microsim::tracking::GamepadSource</name>
+    <message>
+        <source>The game controller cannot be read: SDL did not start (%1).</source>
+        <translation>No se puede leer el mando: SDL no se inició (%1).</translation>
+    </message>
+    <message>
+        <source>No game controller found: connect one (USB or Bluetooth) and try again.</source>
+        <translation>No se encontró ningún mando: conecte uno (USB o Bluetooth) y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>The game controller %1 was disconnected.</source>
+        <translation>El mando %1 se desconectó.</translation>
+    </message>
+</context>
+<context>
     <name>microsim::tracking::ManualSource</name>
     <message>
         <source>Tab — switch hand</source>
@@ -3269,6 +3308,17 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
         <translation>Inicio — vista del microscopio; 1 / 2 / 3 — vista superior / oblicua / lateral</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::tracking::SpacenavSource</name>
+    <message>
+        <source>No 3D mouse: spacenavd, the 3D mouse's daemon, is not running or cannot be reached (install and start spacenavd, then try again).</source>
+        <translation>No hay ratón 3D: spacenavd, el servicio del ratón 3D, no está en marcha o no responde (instale e inicie spacenavd y vuelva a intentarlo).</translation>
+    </message>
+    <message>
+        <source>The 3D mouse's daemon (spacenavd) closed the connection.</source>
+        <translation>El servicio del ratón 3D (spacenavd) cerró la conexión.</translation>
     </message>
 </context>
 </TS>

@@ -14,6 +14,7 @@
 #include "gui/viewport.h"
 #include "gui/window_geometry.h"
 #include "i18n/translations.h"
+#include "tracking/rate_control.h"
 
 #include "microsim/sim/scene/recording.h"
 
@@ -92,6 +93,19 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   connect(calibration_, &CalibrationSession::sceneFrameReady, this, [this](const sim::InputFrame& frame) {
     if (SimulationRunner* runner = attempt_->runner()) runner->submitFrame(frame);
   });
+  // the 3D mouse and the game controller move the tools from where the attempt shows them,
+  // along the microscope's current axes
+  calibration_->setRateToolProviders(
+      [this]() -> std::optional<sim::InputFrame> {
+        const SimulationRunner* runner = attempt_->runner();
+        const std::shared_ptr<const sim::RenderSnapshot> shown = runner ? runner->latestSnapshot() : nullptr;
+        return shown ? tracking::toolsShown(*shown) : std::nullopt;
+      },
+      [this] {
+        const MicroscopeCamera& camera = attempt_->viewport()->camera();
+        const auto axis = [](const QVector3D& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); };
+        return tracking::ViewAxes{axis(camera.right()), axis(camera.up()), axis(-camera.forward())};
+      });
 
   QSettings settings;
   restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());

@@ -9,8 +9,10 @@
 #include "gui/calibration/profile_conversion.h"
 #include "gui/calibration/registration_wizard.h"
 #include "gui/calibration/tracker_status_widget.h"
+#include "tracking/gamepad_source.h"
 #include "tracking/igtl_client.h"
 #include "tracking/replay_source.h"
+#include "tracking/spacenav_source.h"
 
 #include <QFileDialog>
 #include <QInputDialog>
@@ -84,6 +86,36 @@ bool CalibrationSession::openReplayFile(const QString& path, QString* error) {
   const bool trackerFrame = !replay->playsRecording();
   adoptSource(std::move(replay), trackerFrame);
   owned_->start();
+  return true;
+}
+
+void CalibrationSession::setRateToolProviders(tracking::RateToolSource::ToolAnchor anchor,
+                                              tracking::RateToolSource::ViewAxesProvider view) {
+  toolAnchor_ = std::move(anchor);
+  viewAxes_ = std::move(view);
+}
+
+bool CalibrationSession::useSpacenav(QString* error) {
+  // libspnav holds one connection per process: the one in use stays
+  if (auto* current = qobject_cast<tracking::SpacenavSource*>(source_.data()); current && current->status().connected)
+    return true;
+  return useRateSource(std::make_unique<tracking::SpacenavSource>(), error);
+}
+
+bool CalibrationSession::useGamepad(QString* error) {
+  return useRateSource(std::make_unique<tracking::GamepadSource>(), error);
+}
+
+bool CalibrationSession::useRateSource(std::unique_ptr<tracking::RateToolSource> source, QString* error) {
+  source->setToolAnchor(toolAnchor_);
+  source->setViewAxesProvider(viewAxes_);
+  source->start();
+  if (!source->status().connected) {
+    *error = source->status().lastError;
+    return false;
+  }
+  // the devices move the tools in the scene frame: no calibration applies
+  adoptSource(std::move(source), false);
   return true;
 }
 
@@ -180,6 +212,32 @@ CalibrationSession* addCalibrationMenu(QMainWindow* window, assessment::HistoryD
     if (!path.isEmpty() && !session->openReplayFile(path, &error))
       QMessageBox::warning(window, CalibrationSession::tr("Play a tracker recording"), error);
   });
+  QAction* spacenav = menu->addAction(CalibrationSession::tr("Use a 3D mouse (spacenavd)"), window, [session, window] {
+    QString error;
+    if (!session->useSpacenav(&error)) {
+      QMessageBox::warning(window, CalibrationSession::tr("3D mouse"), error);
+      return;
+    }
+    window->statusBar()->showMessage(
+        CalibrationSession::tr("3D mouse connected: push or turn the cap to move the active forceps; "
+                               "the left button closes the jaws, the right one switches the hand."),
+        8000);
+  });
+  spacenav->setObjectName(QStringLiteral("useSpacenavAction"));
+  QAction* gamepad = menu->addAction(CalibrationSession::tr("Use a game controller"), window, [session, window] {
+    QString error;
+    if (!session->useGamepad(&error)) {
+      QMessageBox::warning(window, CalibrationSession::tr("Game controller"), error);
+      return;
+    }
+    const auto* pad = qobject_cast<tracking::GamepadSource*>(session->source());
+    window->statusBar()->showMessage(
+        CalibrationSession::tr("%1 connected: sticks move the active forceps, the triggers close the jaws, "
+                               "the shoulder buttons choose the hand.")
+            .arg(pad != nullptr ? pad->deviceName() : CalibrationSession::tr("Game controller")),
+        8000);
+  });
+  gamepad->setObjectName(QStringLiteral("useGamepadAction"));
   menu->addSeparator();
 
   // the profile

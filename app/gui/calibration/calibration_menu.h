@@ -9,9 +9,15 @@
 //   connect(session, &CalibrationSession::sceneFrameReady, runner, &SimulationRunner::submitFrame);
 // At start, chooseAtStart(window) lets the user pick a stored profile (it returns at once
 // when there is none).
+//
+// The menu's sources: an OpenIGTLink tracker (the primary input), a recorded tracker stream or
+// simulation recording, a 3D mouse through spacenavd and a game controller through SDL. The
+// two devices produce scene-frame InputFrames (no calibration applies to them) and move the
+// tools from where the scene shows them (setRateToolProviders).
 
 #include "calibration/setup_calibration.h"
 #include "tracking/frame_assembler.h"
+#include "tracking/rate_tool_source.h"
 #include "tracking/tracker_source.h"
 
 #include "microsim/assessment/storage/setup_profiles.h"
@@ -47,6 +53,16 @@ class CalibrationSession : public QObject {
   /// Plays a recorded tracker stream or simulation recording at real time; false with a
   /// user-readable reason when the file cannot be played.
   bool openReplayFile(const QString& path, QString* error);
+  /// Where the 3D mouse and the game controller find the tools and the view's axes (the main
+  /// window: the attempt's latest snapshot and the viewport's camera).
+  void setRateToolProviders(tracking::RateToolSource::ToolAnchor anchor,
+                            tracking::RateToolSource::ViewAxesProvider view);
+  /// Drives the tools with a 3D mouse through spacenavd; false with a user-readable reason
+  /// (and the current source kept) when the daemon does not answer.
+  bool useSpacenav(QString* error);
+  /// Drives the tools with the first game controller SDL finds; false with a user-readable
+  /// reason (and the current source kept) when none is plugged in.
+  bool useGamepad(QString* error);
 
   const assessment::SetupProfile& profile() const { return profile_; }
   void setProfile(const assessment::SetupProfile& profile);
@@ -68,6 +84,7 @@ class CalibrationSession : public QObject {
 
  private:
   void onFrame(const sim::InputFrame& frame);
+  bool useRateSource(std::unique_ptr<tracking::RateToolSource> source, QString* error);
 
   assessment::HistoryDatabase* database_;
   QPointer<tracking::TrackerSource> source_;
@@ -75,6 +92,8 @@ class CalibrationSession : public QObject {
   bool trackerFrame_ = true;
   QString igtlHost_;  ///< set while the owned source is an OpenIGTLink client
   quint16 igtlPort_ = 0;
+  tracking::RateToolSource::ToolAnchor toolAnchor_;
+  tracking::RateToolSource::ViewAxesProvider viewAxes_;
   assessment::SetupProfile profile_;
   calibration::SetupCalibration calibration_;
 };
