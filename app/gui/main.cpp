@@ -3,6 +3,7 @@
 // the main window.
 #include "gui/app_settings.h"
 #include "gui/main_window.h"
+#include "gui/render/renderer_probe.h"
 #include "gui/render/surface_format.h"
 #include "gui/screenshots.h"
 #include "gui/start_check.h"
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
   microsim::gui::useMicroscopeSurfaceFormat();
 
   QApplication app(argc, argv);
+  // a software rasteriser (Mesa's llvmpipe, no GPU) draws without multisampling, which alone
+  // costs it 2.4× in frame rate (render/renderer_probe.h); viewports are made after this
+  microsim::gui::useMicroscopeSurfaceFormat(microsim::gui::microscopeSamplesFor(microsim::gui::openGlRendererName()));
   QCoreApplication::setOrganizationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationName(QStringLiteral("microsim"));
   QCoreApplication::setApplicationVersion(QStringLiteral(MICROSIM_VERSION));

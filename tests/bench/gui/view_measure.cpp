@@ -34,6 +34,7 @@
 // depend on what else runs. A measurement, never a test: nothing is asserted, and it is not
 // registered with CTest.
 #include "bench_clock.h"
+#include "gui/render/renderer_probe.h"
 #include "gui/render/surface_format.h"
 #include "gui/simulation_runner.h"
 #include "gui/viewport.h"
@@ -149,8 +150,9 @@ int main(int argc, char** argv) {
   parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("scene file, or none (default anastomosis)"));
   parser.addPositionalArgument(QStringLiteral("size"), QStringLiteral("viewport WxH (default 1280x800)"));
   const QCommandLineOption idleOption(QStringLiteral("idle"), QStringLiteral("load the scene but do not run it"));
-  const QCommandLineOption samplesOption(QStringLiteral("samples"), QStringLiteral("multisampling (default the app's)"),
-                                         QStringLiteral("n"), QString::number(microsim::gui::kMicroscopeSamples));
+  const QCommandLineOption samplesOption(QStringLiteral("samples"),
+                                         QStringLiteral("multisampling (default what the app picks on this renderer)"),
+                                         QStringLiteral("n"));
   parser.addOption(idleOption);
   parser.addOption(samplesOption);
   parser.addHelpOption();
@@ -174,7 +176,10 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const int samples = parser.value(samplesOption).toInt();
+  const QString renderer = microsim::gui::openGlRendererName();
+  const int samples = parser.isSet(samplesOption) ? parser.value(samplesOption).toInt()
+                                                  : microsim::gui::microscopeSamplesFor(renderer);
+  std::printf("renderer %s, %d samples\n", qPrintable(renderer), samples);
   microsim::gui::useMicroscopeSurfaceFormat(samples);
 
   SimulationRunner runner;
