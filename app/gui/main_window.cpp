@@ -14,6 +14,7 @@
 #include "gui/viewport.h"
 #include "gui/window_geometry.h"
 #include "i18n/translations.h"
+#include "tracking/manual_source.h"
 #include "tracking/rate_control.h"
 
 #include "microsim/sim/scene/recording.h"
@@ -105,6 +106,12 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
         const MicroscopeCamera& camera = attempt_->viewport()->camera();
         const auto axis = [](const QVector3D& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); };
         return tracking::ViewAxes{axis(camera.right()), axis(camera.up()), axis(-camera.forward())};
+      },
+      [this]() -> std::optional<Eigen::AlignedBox3d> {
+        const SimulationRunner* runner = attempt_->runner();
+        const tracking::ManualSource* keys = attempt_->manualSource();
+        if (!runner || !runner->sceneDef() || !keys) return std::nullopt;
+        return keys->workingVolume();
       });
 
   QSettings settings;

@@ -62,6 +62,9 @@ void RateToolSource::drive(const RateCommand& command, double dtS) {
   const ViewAxes view = view_ ? view_() : ViewAxes{};
   sim::HandInput& hand = frame_.hand(active_);
   hand = applyRate(hand, command, view, limits_, std::max(dtS, 0.0));
+  if (volume_)
+    if (const std::optional<Eigen::AlignedBox3d> box = volume_())
+      hand.position = hand.position.cwiseMax(box->min()).cwiseMin(box->max());
   emitFrame();
 }
 

@@ -21,6 +21,8 @@
 
 #include <QElapsedTimer>
 
+#include <Eigen/Geometry>
+
 #include <functional>
 #include <optional>
 
@@ -32,6 +34,8 @@ class RateToolSource : public TrackerSource {
  public:
   using ToolAnchor = std::function<std::optional<sim::InputFrame>()>;
   using ViewAxesProvider = std::function<ViewAxes()>;
+  /// The box the tool tips are kept in (scene frame, mm); none: no scene, no limit.
+  using WorkingVolumeProvider = std::function<std::optional<Eigen::AlignedBox3d>()>;
 
   explicit RateToolSource(QObject* parent = nullptr);
 
@@ -41,6 +45,9 @@ class RateToolSource : public TrackerSource {
   void setToolAnchor(ToolAnchor anchor) { anchor_ = std::move(anchor); }
   /// The view's axes (null: the scene's x, y, z).
   void setViewAxesProvider(ViewAxesProvider provider) { view_ = std::move(provider); }
+  /// The working volume a moved tip is kept in (the keyboard's: ManualSource::workingVolume),
+  /// so a device cannot take a tool off where nothing is (null: no limit).
+  void setWorkingVolumeProvider(WorkingVolumeProvider provider) { volume_ = std::move(provider); }
   /// The frame the next motion starts from when there is no anchor.
   void setTools(const sim::InputFrame& frame);
   void setLimits(const RateLimits& limits) { limits_ = limits; }
@@ -76,6 +83,7 @@ class RateToolSource : public TrackerSource {
 
   ToolAnchor anchor_;
   ViewAxesProvider view_;
+  WorkingVolumeProvider volume_;
   RateLimits limits_;
   sim::InputFrame frame_;
   sim::Hand active_ = sim::Hand::Right;

@@ -90,9 +90,11 @@ bool CalibrationSession::openReplayFile(const QString& path, QString* error) {
 }
 
 void CalibrationSession::setRateToolProviders(tracking::RateToolSource::ToolAnchor anchor,
-                                              tracking::RateToolSource::ViewAxesProvider view) {
+                                              tracking::RateToolSource::ViewAxesProvider view,
+                                              tracking::RateToolSource::WorkingVolumeProvider volume) {
   toolAnchor_ = std::move(anchor);
   viewAxes_ = std::move(view);
+  workingVolume_ = std::move(volume);
 }
 
 bool CalibrationSession::useSpacenav(QString* error) {
@@ -109,6 +111,7 @@ bool CalibrationSession::useGamepad(QString* error) {
 bool CalibrationSession::useRateSource(std::unique_ptr<tracking::RateToolSource> source, QString* error) {
   source->setToolAnchor(toolAnchor_);
   source->setViewAxesProvider(viewAxes_);
+  source->setWorkingVolumeProvider(workingVolume_);
   source->start();
   if (!source->status().connected) {
     *error = source->status().lastError;

@@ -53,10 +53,12 @@ class CalibrationSession : public QObject {
   /// Plays a recorded tracker stream or simulation recording at real time; false with a
   /// user-readable reason when the file cannot be played.
   bool openReplayFile(const QString& path, QString* error);
-  /// Where the 3D mouse and the game controller find the tools and the view's axes (the main
-  /// window: the attempt's latest snapshot and the viewport's camera).
+  /// Where the 3D mouse and the game controller find the tools, the view's axes and the
+  /// working volume (the main window: the attempt's latest snapshot, the viewport's camera and
+  /// the keyboard's working volume).
   void setRateToolProviders(tracking::RateToolSource::ToolAnchor anchor,
-                            tracking::RateToolSource::ViewAxesProvider view);
+                            tracking::RateToolSource::ViewAxesProvider view,
+                            tracking::RateToolSource::WorkingVolumeProvider volume);
   /// Drives the tools with a 3D mouse through spacenavd; false with a user-readable reason
   /// (and the current source kept) when the daemon does not answer.
   bool useSpacenav(QString* error);
@@ -94,6 +96,7 @@ class CalibrationSession : public QObject {
   quint16 igtlPort_ = 0;
   tracking::RateToolSource::ToolAnchor toolAnchor_;
   tracking::RateToolSource::ViewAxesProvider viewAxes_;
+  tracking::RateToolSource::WorkingVolumeProvider workingVolume_;
   assessment::SetupProfile profile_;
   calibration::SetupCalibration calibration_;
 };

@@ -65,6 +65,8 @@ class AttemptPage : public QWidget {
   qint64 attemptId() const;
   int stepsDone() const;
   Viewport* viewport() const { return viewport_; }
+  /// The keyboard and mouse source (its working volume fits the attempt's scene).
+  const tracking::ManualSource* manualSource() const { return manual_; }
   /// The running attempt's simulation; null before the first begin().
   SimulationRunner* runner() const;
   AttemptSession* session() const { return session_.get(); }

@@ -91,7 +91,7 @@ TEST(CalibrationDevices, AGameControllerDrivesTheSceneAndIsRecordedAndReplayedLi
         const auto shown = runner.latestSnapshot();
         return shown ? tracking::toolsShown(*shown) : std::nullopt;
       },
-      nullptr);
+      nullptr, nullptr);
   QObject::connect(&session, &CalibrationSession::sceneFrameReady, &runner, &SimulationRunner::submitFrame);
   QSignalSpy frames(&session, &CalibrationSession::sceneFrameReady);
 

@@ -77,6 +77,27 @@ TEST_F(GamepadSourceWithPad, TheLeftStickMovesTheActiveToolInTheViewPlane) {
   source.stop();
 }
 
+TEST_F(GamepadSourceWithPad, AToolPushedOnStopsAtTheWorkingVolume) {
+  GamepadSource source(steppedByTheTest());
+  source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
+  source.setViewAxesProvider(gamepadSideView);
+  // the keyboard's box around the scene: the right tip may go 0.5 mm further along +y
+  const Eigen::AlignedBox3d box(Eigen::Vector3d(-2, -0.5, -0.5), Eigen::Vector3d(2, 0.5, 0.5));
+  source.setWorkingVolumeProvider([box] { return std::optional<Eigen::AlignedBox3d>(box); });
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  source.start();
+  ASSERT_TRUE(source.status().connected) << source.status().lastError.toStdString();
+
+  // full right for 2 s (4 mm at 2 mm/s): the tip stops at the box's face, the other axes kept
+  pad.setAxis(SDL_CONTROLLER_AXIS_LEFTX, 32767);
+  for (int k = 0; k < 20; ++k) source.advance(0.1);
+  ASSERT_GT(frames.count(), 0);
+  const sim::InputFrame pushed = lastGamepadFrame(frames);
+  EXPECT_EQ(pushed.hand(sim::Hand::Right).position, Eigen::Vector3d(1, 0.5, 0));
+  EXPECT_EQ(pushed.hand(sim::Hand::Left).position, Eigen::Vector3d(-1, 0, 0));
+  source.stop();
+}
+
 TEST_F(GamepadSourceWithPad, TriggersCloseEachHandsJawsGraduallyAndShouldersChooseTheHand) {
   GamepadSource source(steppedByTheTest());
   source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
