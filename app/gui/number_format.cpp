@@ -38,7 +38,7 @@ QString NumberFormat::value(double value, std::string_view unit, const QString& 
   if (!std::isfinite(value)) return notFinite();
   if (unit == "mm" && lengthUnits == QLatin1String("um"))
     return shortestRounded(value * 1000.0, 0) + QStringLiteral(" µm");
-  const QString number = shortestRounded(value, decimalsFor(unit));
+  QString number = shortestRounded(value, decimalsFor(unit));
   const QString symbol = MetricVocabulary::unitSymbol(unit);
   if (symbol.isEmpty()) return number;
   if (symbol == QStringLiteral("°")) return number + symbol;

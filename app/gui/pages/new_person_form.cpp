@@ -25,7 +25,8 @@ NewPersonForm::NewPersonForm(Role role, QWidget* parent) : QWidget(parent), role
   auto* form = new QFormLayout(this);
   form->setContentsMargins(0, 0, 0, 0);
   form->addRow(tr("Name"), name_);
-  QLineEdit* last = name_;
+  // Return in the form's last field submits it
+  QLineEdit* last = nullptr;
   if (role_ == Role::Trainee) {
     group_ = new QComboBox(this);
     group_->setObjectName(QStringLiteral("newPersonGroup"));
