@@ -2,6 +2,7 @@
 // its dialog stores what it checked in a real temporary SQLite history.
 #include "gui/main_window.h"
 #include "gui/pages/add_person_dialog.h"
+#include "gui/pages/lesson_list_page.h"
 #include "gui/pages/new_person_form.h"
 #include "gui/pages/sign_in_page.h"
 

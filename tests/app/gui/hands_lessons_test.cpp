@@ -165,7 +165,10 @@ TEST(HandsLessons, LessonOneGrabAndStretchByMouseAndKeys) {
 
   // side view: the tips three pixels into the vessel's top edge
   app.key(Qt::Key_3);
-  const auto [top, bottom] = app.vesselRows(tip().x() + 15);
+  // named ints, not a structured binding: lambdas capture them (clang 14)
+  const auto rows = app.vesselRows(tip().x() + 15);
+  const int top = rows.first;
+  const int bottom = rows.second;
   ASSERT_GT(bottom, top);
   app.dragUntil(tip, [&] { return QPoint(tip().x(), top + 3); });
   app.rightClick();

@@ -14,7 +14,7 @@ namespace {
 // the default locale set to `locale` for one test, as the app's start-up sets it
 class DefaultLocaleForNumbers {
  public:
-  explicit DefaultLocaleForNumbers(const QLocale& locale) : previous_(QLocale()) { QLocale::setDefault(locale); }
+  explicit DefaultLocaleForNumbers(const QLocale& locale) { QLocale::setDefault(locale); }
   ~DefaultLocaleForNumbers() { QLocale::setDefault(previous_); }
   DefaultLocaleForNumbers(const DefaultLocaleForNumbers&) = delete;
   DefaultLocaleForNumbers& operator=(const DefaultLocaleForNumbers&) = delete;

@@ -26,7 +26,7 @@ namespace {
 // our catalogues and the language's number format; English and the previous locale after
 class ScopedInterfaceLanguage {
  public:
-  explicit ScopedInterfaceLanguage(const QString& language) : previousLocale_(QLocale()) {
+  explicit ScopedInterfaceLanguage(const QString& language) {
     QLocale::setDefault(i18n::localeFor(language));
     if (language == QLatin1String("en")) return;
     if (qt_.load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
