@@ -26,7 +26,6 @@ NewPersonForm::NewPersonForm(Role role, QWidget* parent) : QWidget(parent), role
   form->setContentsMargins(0, 0, 0, 0);
   form->addRow(tr("Name"), name_);
   // Return in the form's last field submits it
-  QLineEdit* last = nullptr;
   if (role_ == Role::Trainee) {
     group_ = new QComboBox(this);
     group_->setObjectName(QStringLiteral("newPersonGroup"));
@@ -34,7 +33,7 @@ NewPersonForm::NewPersonForm(Role role, QWidget* parent) : QWidget(parent), role
     group_->setInsertPolicy(QComboBox::NoInsert);
     group_->lineEdit()->setPlaceholderText(tr("none"));
     form->addRow(tr("Group"), group_);
-    last = group_->lineEdit();
+    connect(group_->lineEdit(), &QLineEdit::returnPressed, this, &NewPersonForm::submitted);
   } else {
     password_ = new QLineEdit(this);
     password_->setObjectName(QStringLiteral("newPersonPassword"));
@@ -45,9 +44,8 @@ NewPersonForm::NewPersonForm(Role role, QWidget* parent) : QWidget(parent), role
     repeat_->setEchoMode(QLineEdit::Password);
     form->addRow(tr("Password"), password_);
     form->addRow(tr("Password again"), repeat_);
-    last = repeat_;
+    connect(repeat_, &QLineEdit::returnPressed, this, &NewPersonForm::submitted);
   }
-  connect(last, &QLineEdit::returnPressed, this, &NewPersonForm::submitted);
 }
 
 QString NewPersonForm::name() const { return name_->text().trimmed(); }
