@@ -216,6 +216,7 @@ void Scene::grab(int hand) {
 
 void Scene::cutThread() {
   const suture::SutureModel& model = *suture_;
+  std::vector<int> anchors;  // where the thread is held in the tissue
   for (int h = 0; h < kHandCount; ++h) {
     const std::size_t hs = static_cast<std::size_t>(h);
     // scissors picked up already closed do not cut: the closing must happen in the hand
@@ -223,9 +224,10 @@ void Scene::cutThread() {
     const std::vector<tools::ThreadCut> cuts =
         tools::scissorsCuts(*def_.scissors, scissors_[hs]->pose, scissorsWas_[hs]->closure, scissors_[hs]->closure,
                             sutureState_.x, sutureState_.alive, model.needleLinks(), model.def().contactRadius);
+    if (cuts.empty()) continue;
+    anchors.clear();
+    for (const suture::Pierce& p : sutureState_.pierces) anchors.push_back(p.node);
     for (const tools::ThreadCut& cut : cuts) {
-      std::vector<int> anchors;
-      for (const suture::Pierce& p : sutureState_.pierces) anchors.push_back(p.node);
       const std::optional<double> tail = tools::cutEndLength(sutureState_.x, sutureState_.alive, cut, anchors);
       const bool needleSide = tools::onNeedlePiece(sutureState_.alive, model.swage(), cut.link);
       sutureState_.alive[static_cast<std::size_t>(cut.link)] = 0;
