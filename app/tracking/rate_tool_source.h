@@ -76,6 +76,8 @@ class RateToolSource : public TrackerSource {
   void setClosure(sim::Hand hand, double closure);
   void selectHand(sim::Hand hand);
   void switchHand();
+  /// The active hand swaps its forceps for the scissors or back (instrument_switch.h).
+  void switchActiveInstrument();
 
  private:
   void takeToolsShown();
