@@ -4,7 +4,8 @@
 // microscissors by turns (tools/microscissors.h). Whatever else a hand held (a scalpel from a
 // tracker, a needle holder) goes back to the forceps. The new instrument is taken up open:
 // scissors taken up closed would cut nothing (the engine cuts only on a closing in the hand),
-// and a forceps put down opens anyway.
+// and a forceps put down opens anyway. The sources swap only where the scene declares scissors
+// (ManualSource::placeTools, RateToolSource::setScissorsInScene).
 
 #include "microsim/sim/scene/input_frame.h"
 

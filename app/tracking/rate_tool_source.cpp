@@ -91,7 +91,7 @@ void RateToolSource::switchHand() {
 }
 
 void RateToolSource::switchActiveInstrument() {
-  if (!running_) return;
+  if (!running_ || (scissors_ && !scissors_())) return;
   if (!moving_) takeToolsShown();
   switchInstrument(frame_.hand(active_));
   emitFrame();

@@ -160,6 +160,15 @@ TEST_F(GamepadSourceWithPad, YSwapsTheActiveHandsForcepsForTheScissorsAndTheTrig
   source.advance(0.01);
   EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
   EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).closure, 0.0);
+
+  // a scene without scissors: Y swaps nothing
+  source.setScissorsInScene([] { return false; });
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, false);
+  source.advance(0.01);
+  const qsizetype before = frames.count();
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, true);
+  source.advance(0.01);
+  EXPECT_EQ(frames.count(), before);
   source.stop();
 }
 
