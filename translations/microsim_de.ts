@@ -1300,6 +1300,18 @@
         <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
         <translation>Die rechte Pinzette hat ins Leere gegriffen: zwischen ihren Branchen lag nichts.</translation>
     </message>
+    <message>
+        <source>The scissors cut the thread: the cut end is %1 long.</source>
+        <translation>Die Schere hat den Faden geschnitten: Das Fadenende ist %1 lang.</translation>
+    </message>
+    <message>
+        <source>The scissors cut the thread: no stitch holds it on either side of the cut.</source>
+        <translation>Die Schere hat den Faden geschnitten: Auf keiner Seite des Schnitts hält ihn ein Stich.</translation>
+    </message>
+    <message>
+        <source>Too short to tie: the needle keeps only %1 of thread.</source>
+        <translation>Zu kurz zum Knoten: Der Nadel bleiben nur %1 Faden.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::CalibrationSession</name>
@@ -3085,6 +3097,30 @@ RMS-Fehler %7 mm, größter %8 mm
         <source>Side view</source>
         <translation>Seitenansicht</translation>
     </message>
+    <message>
+        <source>Left hand: %1 · right hand: %2</source>
+        <translation>Linke Hand: %1 · rechte Hand: %2</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nichts</translation>
+    </message>
+    <message>
+        <source>forceps</source>
+        <translation>Pinzette</translation>
+    </message>
+    <message>
+        <source>needle holder</source>
+        <translation>Nadelhalter</translation>
+    </message>
+    <message>
+        <source>scalpel</source>
+        <translation>Skalpell</translation>
+    </message>
+    <message>
+        <source>scissors</source>
+        <translation>Schere</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::settings::SettingsDialog</name>
@@ -3308,6 +3344,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
         <translation>Pos1 — Mikroskopansicht; 1 / 2 / 3 — Ansicht von oben / schräg / von der Seite</translation>
+    </message>
+    <message>
+        <source>T — take up the scissors or the forceps (the jaw keys and buttons close either)</source>
+        <translation>T — Schere oder Pinzette aufnehmen (die Tasten und Knöpfe für die Branchen schließen beide)</translation>
     </message>
 </context>
 <context>

@@ -1300,6 +1300,18 @@
         <source>The right forceps closed on nothing: nothing lay between its jaws.</source>
         <translation>La pinza derecha se cerró en vacío: no había nada entre sus ramas.</translation>
     </message>
+    <message>
+        <source>The scissors cut the thread: the cut end is %1 long.</source>
+        <translation>Las tijeras cortaron el hilo: el cabo cortado mide %1.</translation>
+    </message>
+    <message>
+        <source>The scissors cut the thread: no stitch holds it on either side of the cut.</source>
+        <translation>Las tijeras cortaron el hilo: ningún punto lo sujeta a ningún lado del corte.</translation>
+    </message>
+    <message>
+        <source>Too short to tie: the needle keeps only %1 of thread.</source>
+        <translation>Demasiado corto para anudar: a la aguja solo le quedan %1 de hilo.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::CalibrationSession</name>
@@ -3085,6 +3097,30 @@ Error RMS %7 mm, máximo %8 mm
         <source>Side view</source>
         <translation>Vista lateral</translation>
     </message>
+    <message>
+        <source>Left hand: %1 · right hand: %2</source>
+        <translation>Mano izquierda: %1 · mano derecha: %2</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nada</translation>
+    </message>
+    <message>
+        <source>forceps</source>
+        <translation>pinzas</translation>
+    </message>
+    <message>
+        <source>needle holder</source>
+        <translation>portaagujas</translation>
+    </message>
+    <message>
+        <source>scalpel</source>
+        <translation>bisturí</translation>
+    </message>
+    <message>
+        <source>scissors</source>
+        <translation>tijeras</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::settings::SettingsDialog</name>
@@ -3308,6 +3344,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>Home — microscope view; 1 / 2 / 3 — top / oblique / side view</source>
         <translation>Inicio — vista del microscopio; 1 / 2 / 3 — vista superior / oblicua / lateral</translation>
+    </message>
+    <message>
+        <source>T — take up the scissors or the forceps (the jaw keys and buttons close either)</source>
+        <translation>T — tomar las tijeras o las pinzas (las teclas y botones de las ramas cierran ambas)</translation>
     </message>
 </context>
 <context>

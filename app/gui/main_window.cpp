@@ -113,6 +113,10 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
         if (!runner || !runner->sceneDef() || !keys) return std::nullopt;
         return keys->workingVolume();
       });
+  calibration_->setScissorsInScene([this] {
+    const SimulationRunner* runner = attempt_->runner();
+    return runner && runner->sceneDef() && runner->sceneDef()->scissors.has_value();
+  });
 
   QSettings settings;
   restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());

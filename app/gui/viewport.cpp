@@ -137,7 +137,7 @@ void Viewport::cameraChanged() {
 
 void Viewport::loadStaticGeometry() {
   for (DrawMesh m : {DrawMesh::Tissue, DrawMesh::Needle, DrawMesh::Thread, DrawMesh::LeftJaw, DrawMesh::RightJaw,
-                     DrawMesh::ScalpelBlade, DrawMesh::Background}) {
+                     DrawMesh::ScalpelBlade, DrawMesh::ScissorsBlade, DrawMesh::ScissorsShaft, DrawMesh::Background}) {
     mesh(m) = {};
     meshChanged(m);
   }
@@ -158,6 +158,10 @@ void Viewport::loadStaticGeometry() {
   for (int h = 0; h < sim::kHandCount; ++h)
     if (const auto& f = def.forceps[static_cast<std::size_t>(h)]) mesh(jawMeshOf(static_cast<sim::Hand>(h))) = jawMesh(*f);
   if (def.scalpel) mesh(DrawMesh::ScalpelBlade) = scalpelMesh(*def.scalpel);
+  if (def.scissors) {
+    mesh(DrawMesh::ScissorsBlade) = scissorsBladeMesh(*def.scissors);
+    mesh(DrawMesh::ScissorsShaft) = scissorsShaftMesh(*def.scissors);
+  }
 
   BackgroundPlane plane = backgroundPlane(def);
   mesh(DrawMesh::Background) = std::move(plane.mesh);
@@ -432,8 +436,15 @@ void Viewport::drawOverlay() {
   if (manual_) {
     const QString hand = manual_->activeHand() == sim::Hand::Left ? tr("Left hand active")
                                                                   : tr("Right hand active");
+    // what each hand holds as the scene has it (any source may have swapped it), else as the keys do
+    const auto held = [this](sim::Hand h) {
+      return snapshot_ ? snapshot_->instruments[static_cast<std::size_t>(h)] : manual_->current().hand(h).instrument;
+    };
+    const QString tools =
+        tr("Left hand: %1 · right hand: %2").arg(instrumentName(held(sim::Hand::Left)), instrumentName(held(sim::Hand::Right)));
     painter.setPen(QColor(220, 220, 220, 200));
     painter.drawText(width() - fm.horizontalAdvance(hand) - 10, height() - 10, hand);
+    painter.drawText(width() - fm.horizontalAdvance(tools) - 10, height() - 10 - fm.height(), tools);
   }
   painter.end();
   // QPainter leaves its own state behind; the next frame sets what it needs
@@ -441,6 +452,17 @@ void Viewport::drawOverlay() {
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
+}
+
+QString Viewport::instrumentName(sim::Instrument instrument) {
+  switch (instrument) {
+    case sim::Instrument::None: return tr("nothing");
+    case sim::Instrument::Forceps: return tr("forceps");
+    case sim::Instrument::NeedleHolder: return tr("needle holder");
+    case sim::Instrument::Scalpel: return tr("scalpel");
+    case sim::Instrument::Scissors: return tr("scissors");
+  }
+  return {};
 }
 
 // ---- input ---------------------------------------------------------------------------------

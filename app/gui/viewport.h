@@ -3,13 +3,15 @@
 // RenderSnapshot (DESIGN.md §Data flow): the tissue with per-vertex normals from the snapshot
 // and two-sided lighting (the lumen's inner wall has its own colour), the suture and the
 // needle as smooth tubes built here from the snapshot's nodes (broken links skipped), the
-// forceps jaws from the scene's jaw mesh, the scalpel in a hand that holds it, and depth cues:
+// forceps jaws from the scene's jaw mesh, the scalpel or the scissors in a hand that holds
+// them, and depth cues:
 // a background plane under the scene with the scene's projected shadow, darkening with depth
 // past the focal plane and a loss of contrast off it (the microscope's shallow depth of
 // field), and a side view in the top-right corner (render/side_view.h) that shows a tool's
 // height above the tissue. Each forceps' tip is marked where its jaws meet, in the colour of
 // what they would close on now, with a ring around it (render/draw_list.h). Learn-mode
-// guides are drawn over it; F1 shows the key map.
+// guides are drawn over it; F1 shows the key map; a line at the bottom names what each hand
+// holds (as the latest snapshot has it) and which hand is active.
 //
 // Each frame is one draw list (render/draw_list.h) built from the snapshot; the lit pass, the
 // shadow pass, each stereo eye and the side view draw that list.
@@ -102,6 +104,8 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   int drawnStep() const { return drawnStep_; }
   /// The snapshot the last frame showed (null: none); for measurements and tests.
   const sim::RenderSnapshot* drawnSnapshot() const { return snapshot_.get(); }
+  /// An instrument's name as the overlay shows what each hand holds (translated, lower case).
+  static QString instrumentName(sim::Instrument instrument);
   /// Empty while the GL pipeline is healthy; otherwise what failed (shader log).
   QString lastError() const { return lastError_; }
 

@@ -36,6 +36,11 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
     if (e.kind == sim::SceneEventKind::GraspEmpty) facts.emptyGraspHand = e.hand;
     if (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)
       facts.emptyGraspHand = -1;
+    if (e.kind == sim::SceneEventKind::ThreadCut) {
+      ++facts.threadCuts;
+      facts.lastCutEndMm = e.value;
+    }
+    if (e.kind == sim::SceneEventKind::ThreadTooShort) facts.threadTooShortMm = e.value;
   }
   facts.stitches = countStitches(pierces);
   facts.pierces = pierces;

@@ -10,6 +10,7 @@
 //   D-pad left / right  roll the tool about the axis toward the viewer
 //   left / right trigger  close the left / right jaws, gradually (half pulled = half closed)
 //   left / right shoulder make the left / right hand the active one
+//   Y (the top face button)  the active hand takes up the scissors, or the forceps again
 //
 // Sticks report −1..1 (SDL: −32768..32767, y positive *down*), triggers 0..1; a stick is read
 // past a dead zone (rate_control.h's pastDeadZone) since a released stick rarely rests at 0.
@@ -28,6 +29,7 @@ struct GamepadState {
   double rightX = 0.0, rightY = 0.0;  ///< −1..1, y positive down
   double leftTrigger = 0.0, rightTrigger = 0.0;  ///< 0..1
   bool leftShoulder = false, rightShoulder = false;
+  bool y = false;  ///< the top face button (Xbox Y, PlayStation △, Switch X)
   bool dpadUp = false, dpadDown = false, dpadLeft = false, dpadRight = false;
 };
 

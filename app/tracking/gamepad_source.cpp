@@ -20,6 +20,7 @@ GamepadState readGamepad(SDL_GameController* pad) {
   s.rightTrigger = std::max(0.0, axis(SDL_CONTROLLER_AXIS_TRIGGERRIGHT));
   s.leftShoulder = button(SDL_CONTROLLER_BUTTON_LEFTSHOULDER);
   s.rightShoulder = button(SDL_CONTROLLER_BUTTON_RIGHTSHOULDER);
+  s.y = button(SDL_CONTROLLER_BUTTON_Y);
   s.dpadUp = button(SDL_CONTROLLER_BUTTON_DPAD_UP);
   s.dpadDown = button(SDL_CONTROLLER_BUTTON_DPAD_DOWN);
   s.dpadLeft = button(SDL_CONTROLLER_BUTTON_DPAD_LEFT);
@@ -97,6 +98,8 @@ void GamepadSource::advance(double dtS) {
   // a shoulder chooses the hand as it is pressed
   if (state.leftShoulder && !previous_.leftShoulder) selectHand(sim::Hand::Left);
   if (state.rightShoulder && !previous_.rightShoulder) selectHand(sim::Hand::Right);
+  // Y swaps the active hand's instrument as it is pressed
+  if (state.y && !previous_.y) switchActiveInstrument();
 
   // a trigger sets its jaws when it moves, so jaws another source closed stay closed while
   // the trigger rests

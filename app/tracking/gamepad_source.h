@@ -1,8 +1,9 @@
 #pragma once
 // A game controller as a tracker source, through SDL2's game-controller API (Debian:
 // libsdl2-dev; SDL maps most pads onto its standard layout). Sticks and D-pad move and turn the
-// active forceps at a rate, the triggers close the jaws gradually, the shoulders choose the
-// hand (gamepad_mapping.h); frames are in the scene frame (rate_tool_source.h).
+// active tool at a rate, the triggers close the jaws (or the scissors) gradually, the
+// shoulders choose the hand, Y swaps the active hand's forceps for the scissors
+// (gamepad_mapping.h); frames are in the scene frame (rate_tool_source.h).
 //
 // start() opens the first game controller SDL finds. Without one it emits linkDown with
 // status().lastError saying so and produces nothing; when the controller is unplugged the

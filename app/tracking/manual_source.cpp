@@ -1,5 +1,7 @@
 #include "tracking/manual_source.h"
 
+#include "tracking/instrument_switch.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -84,6 +86,7 @@ void ManualSource::placeTools(const sim::SceneDef& def) {
   volume_.max().array() += kWorkingMarginMm;
   frame_.hands = home_;
   held_ = {};
+  scissorsInScene_ = def.scissors.has_value();
   if (running_) emitFrame();
 }
 
@@ -107,7 +110,8 @@ bool ManualSource::handleKey(int key, Qt::KeyboardModifiers modifiers, bool pres
                      key == Qt::Key_D || key == Qt::Key_W || key == Qt::Key_S || key == Qt::Key_Q ||
                      key == Qt::Key_E || key == Qt::Key_Left || key == Qt::Key_Right ||
                      key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_R ||
-                     key == Qt::Key_Z || key == Qt::Key_X || key == Qt::Key_C || key == Qt::Key_V;
+                     key == Qt::Key_Z || key == Qt::Key_X || key == Qt::Key_C || key == Qt::Key_V ||
+                     key == Qt::Key_T;
   if (!known) return false;
   if (!pressed) return true;  // moves happen on presses and key repeats
   switch (key) {
@@ -116,6 +120,9 @@ bool ManualSource::handleKey(int key, Qt::KeyboardModifiers modifiers, bool pres
       if (autoRepeat) return true;
       active_ = active_ == sim::Hand::Left ? sim::Hand::Right : sim::Hand::Left;
       Q_EMIT activeHandChanged(active_);
+      return true;
+    case Qt::Key_T:
+      if (!autoRepeat) switchActiveInstrument();
       return true;
     case Qt::Key_A: move(-step * right_); break;
     case Qt::Key_D: move(step * right_); break;
@@ -172,6 +179,16 @@ void ManualSource::setClosure(double closure) {
   emitFrame();
 }
 
+bool ManualSource::switchActiveInstrument() {
+  if (!scissorsInScene_) return false;
+  sim::HandInput& hand = frame_.hand(active_);
+  switchInstrument(hand);
+  held_[static_cast<std::size_t>(active_)].reset();  // a forceps put down lets go of the needle
+  Q_EMIT instrumentChanged(active_, hand.instrument);
+  emitFrame();
+  return true;
+}
+
 void ManualSource::setHeldNeedle(sim::Hand hand, const std::optional<HeldNeedleArc>& arc) {
   held_[static_cast<std::size_t>(hand)] = arc;
 }
@@ -204,6 +221,7 @@ void ManualSource::emitFrame() {
 QStringList ManualSource::keyMapHelp() {
   return {
       tr("Tab — switch hand"),
+      tr("T — take up the scissors or the forceps (the jaw keys and buttons close either)"),
       tr("A / D — move left / right"),
       tr("W / S — move up / down"),
       tr("Q / E — move away / toward you"),

@@ -1,14 +1,17 @@
 #pragma once
-// Tool control without trackers: the keyboard (and the viewport's mouse) drive the two forceps.
+// Tool control without trackers: the keyboard (and the viewport's mouse) drive the two hands'
+// tools, each the forceps or the microscissors.
 // Key map (view-relative: "right", "up" and "depth" follow the microscope's current view):
 //   Tab            switch the active hand (left ↔ right)
+//   T              the active hand puts its forceps down and takes up the scissors, or back
+//                  (instrument_switch.h; only where the scene declares scissors)
 //   A / D          move the active tip left / right        W / S   up / down
 //   Q / E          move the active tip away from / toward the viewer (depth)
 //   ← / →          turn the active tool about the view's up axis
 //   ↑ / ↓          tilt the active tool about the view's right axis
 //   Z / X          turn a held needle back / forward along its own curve
-//   C / V          close / open the active jaws a step
-//   Space (held)   close the active jaws; released, they open
+//   C / V          close / open the active jaws (or blades) a step
+//   Space (held)   close the active jaws (or blades); released, they open
 //   R              put both tools back at their start poses
 //   Shift + any move or turn: fine steps
 // Steps: kStepMm (kFineStepMm with Shift) per press or key repeat; kStepDeg / kFineStepDeg per
@@ -25,7 +28,7 @@
 // the needle where it lies, the tools' start poses), kWorkingMarginMm beyond it on every side
 // (placeTools sets it), so a tool cannot wander off where nothing is.
 //
-// Every change emits frameReady with both hands (tracked, Forceps) and the time in s since
+// Every change emits frameReady with both hands (tracked, each with its instrument) and the time in s since
 // start(), never earlier than the previous frame's. Nothing is emitted before start() or after
 // stop(). Poses are in the scene frame already (no calibration applies to this source).
 
@@ -66,7 +69,8 @@ class ManualSource : public TrackerSource {
 
   /// Start poses beside the scene's camera target (each tool 1.2 mm to its side and 0.6 mm
   /// toward the viewer, jaws open, pointing in at the target); used on R too. Sets the working
-  /// volume around the scene (header essay) and forgets any held needle.
+  /// volume around the scene (header essay), forgets any held needle and notes whether the
+  /// scene has scissors to take up.
   void placeTools(const sim::SceneDef& def);
   /// The box the tips are kept in (scene frame, mm).
   const Eigen::AlignedBox3d& workingVolume() const { return volume_; }
@@ -87,6 +91,9 @@ class ManualSource : public TrackerSource {
   bool turnAlongNeedle(double degrees);
   /// Sets the active jaws' closure (clamped to 0 open .. 1 closed).
   void setClosure(double closure);
+  /// The active hand swaps its forceps for the scissors or back (T); false, and nothing
+  /// changes, when the scene declares no scissors.
+  bool switchActiveInstrument();
   /// What `hand` holds of a needle, in its tool frame (null: no needle); the viewport keeps it
   /// current from the drawn snapshot.
   void setHeldNeedle(sim::Hand hand, const std::optional<HeldNeedleArc>& arc);
@@ -102,6 +109,7 @@ class ManualSource : public TrackerSource {
 
  Q_SIGNALS:
   void activeHandChanged(microsim::sim::Hand hand);
+  void instrumentChanged(microsim::sim::Hand hand, microsim::sim::Instrument instrument);
 
  private:
   void emitFrame();
@@ -117,6 +125,7 @@ class ManualSource : public TrackerSource {
   Eigen::Vector3d toward_ = Eigen::Vector3d::UnitZ();
   Eigen::AlignedBox3d volume_;
   std::array<std::optional<HeldNeedleArc>, sim::kHandCount> held_{};
+  bool scissorsInScene_ = false;
   QElapsedTimer clock_;
   bool running_ = false;
   std::uint64_t emitted_ = 0;

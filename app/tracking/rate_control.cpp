@@ -42,12 +42,13 @@ std::optional<sim::InputFrame> toolsShown(const sim::RenderSnapshot& snapshot) {
     sim::HandInput& in = frame.hands[static_cast<std::size_t>(h)];
     if (!tool.present) continue;
     const Eigen::Matrix4d pose = tool.pose.cast<double>();
-    in.instrument = sim::Instrument::Forceps;
+    in.instrument = snapshot.instruments[static_cast<std::size_t>(h)];
     in.tracked = true;
     in.position = pose.block<3, 1>(0, 3);
     // the snapshot's matrix is single precision: the quaternion is renormalised
     in.orientation = Eigen::Quaterniond(Eigen::Matrix3d(pose.block<3, 3>(0, 0))).normalized();
-    in.closure = std::clamp(tool.closure, 0.0, 1.0);
+    const sim::ScissorsSnapshot& scissors = snapshot.scissors[static_cast<std::size_t>(h)];
+    in.closure = std::clamp(scissors.present ? scissors.closure : tool.closure, 0.0, 1.0);
     any = true;
   }
   if (!any) return std::nullopt;

@@ -54,7 +54,8 @@ sim::HandInput applyRate(const sim::HandInput& hand, const RateCommand& command,
 double pastDeadZone(double value, double dead);
 
 /// The tools as a snapshot shows them, as the frame that would put them there (tracked where
-/// the scene has the tool, with its closure); nullopt when the scene has no forceps.
+/// the scene has the tool, with the instrument the hand holds and its closure: the scissors'
+/// while it holds them); nullopt when the scene has no forceps.
 std::optional<sim::InputFrame> toolsShown(const sim::RenderSnapshot& snapshot);
 
 }  // namespace microsim::tracking

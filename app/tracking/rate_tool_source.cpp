@@ -1,5 +1,7 @@
 #include "tracking/rate_tool_source.h"
 
+#include "tracking/instrument_switch.h"
+
 #include <algorithm>
 
 namespace microsim::tracking {
@@ -86,6 +88,13 @@ void RateToolSource::selectHand(sim::Hand hand) {
 
 void RateToolSource::switchHand() {
   selectHand(active_ == sim::Hand::Left ? sim::Hand::Right : sim::Hand::Left);
+}
+
+void RateToolSource::switchActiveInstrument() {
+  if (!running_ || (scissors_ && !scissors_())) return;
+  if (!moving_) takeToolsShown();
+  switchInstrument(frame_.hand(active_));
+  emitFrame();
 }
 
 void RateToolSource::takeToolsShown() {

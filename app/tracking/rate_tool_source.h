@@ -36,6 +36,8 @@ class RateToolSource : public TrackerSource {
   using ViewAxesProvider = std::function<ViewAxes()>;
   /// The box the tool tips are kept in (scene frame, mm); none: no scene, no limit.
   using WorkingVolumeProvider = std::function<std::optional<Eigen::AlignedBox3d>()>;
+  /// Whether the scene declares scissors for a hand to take up.
+  using ScissorsInScene = std::function<bool()>;
 
   explicit RateToolSource(QObject* parent = nullptr);
 
@@ -48,6 +50,9 @@ class RateToolSource : public TrackerSource {
   /// The working volume a moved tip is kept in (the keyboard's: ManualSource::workingVolume),
   /// so a device cannot take a tool off where nothing is (null: no limit).
   void setWorkingVolumeProvider(WorkingVolumeProvider provider) { volume_ = std::move(provider); }
+  /// Whether a swap of instruments may take up the scissors (null: it may); without them the
+  /// swap does nothing, as the keyboard's T (manual_source.h).
+  void setScissorsInScene(ScissorsInScene scissors) { scissors_ = std::move(scissors); }
   /// The frame the next motion starts from when there is no anchor.
   void setTools(const sim::InputFrame& frame);
   void setLimits(const RateLimits& limits) { limits_ = limits; }
@@ -76,6 +81,8 @@ class RateToolSource : public TrackerSource {
   void setClosure(sim::Hand hand, double closure);
   void selectHand(sim::Hand hand);
   void switchHand();
+  /// The active hand swaps its forceps for the scissors or back (instrument_switch.h).
+  void switchActiveInstrument();
 
  private:
   void takeToolsShown();
@@ -84,6 +91,7 @@ class RateToolSource : public TrackerSource {
   ToolAnchor anchor_;
   ViewAxesProvider view_;
   WorkingVolumeProvider volume_;
+  ScissorsInScene scissors_;
   RateLimits limits_;
   sim::InputFrame frame_;
   sim::Hand active_ = sim::Hand::Right;

@@ -20,6 +20,7 @@ SpacenavButtonAction spacenavButtonAction(int button) {
   switch (button) {
     case 0: return SpacenavButtonAction::HoldJaws;
     case 1: return SpacenavButtonAction::SwitchHand;
+    case 2: return SpacenavButtonAction::SwitchInstrument;
     default: return SpacenavButtonAction::None;
   }
 }

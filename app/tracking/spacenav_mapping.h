@@ -11,8 +11,11 @@
 // (a reflection of z flips the sense of the rotations about x and y: libspnav's own cube
 // example converts the same way), each past a dead zone (rate_control.h's pastDeadZone).
 // The cap moves the active tool: push it to move, twist or tilt it to turn the tool about
-// its tip. Button 0 (the left one) held closes the active jaws; button 1 (the right one)
-// switches the active hand; further buttons (on the larger models) do nothing.
+// its tip. Button 0 (the left one) held closes the active jaws (or scissors); button 1 (the
+// right one) switches the active hand; button 2 (on the larger models) swaps the active
+// hand's forceps for the scissors; further buttons do nothing. A two-button SpaceNavigator
+// swaps instruments with the keyboard's T: the device carries on with whatever the scene
+// shows in the hand (rate_tool_source.h's anchor).
 
 #include "tracking/rate_control.h"
 
@@ -32,7 +35,7 @@ struct SpacenavScale {
                              ///< reports the whole rest as its period)
 };
 
-enum class SpacenavButtonAction { None, HoldJaws, SwitchHand };
+enum class SpacenavButtonAction { None, HoldJaws, SwitchHand, SwitchInstrument };
 
 /// The deflection of a motion event in the view's axes (equation above).
 RateCommand spacenavCommand(const SpacenavMotion& motion, const SpacenavScale& scale = {});

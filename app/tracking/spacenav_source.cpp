@@ -53,6 +53,9 @@ void SpacenavSource::apply(const SpacenavEvent& event) {
     case SpacenavButtonAction::SwitchHand:
       if (event.pressed) switchHand();
       break;
+    case SpacenavButtonAction::SwitchInstrument:
+      if (event.pressed) switchActiveInstrument();
+      break;
     case SpacenavButtonAction::None: break;
   }
 }

@@ -112,6 +112,7 @@ bool CalibrationSession::useRateSource(std::unique_ptr<tracking::RateToolSource>
   source->setToolAnchor(toolAnchor_);
   source->setViewAxesProvider(viewAxes_);
   source->setWorkingVolumeProvider(workingVolume_);
+  source->setScissorsInScene(scissorsInScene_);
   source->start();
   if (!source->status().connected) {
     *error = source->status().lastError;

@@ -59,6 +59,9 @@ class CalibrationSession : public QObject {
   void setRateToolProviders(tracking::RateToolSource::ToolAnchor anchor,
                             tracking::RateToolSource::ViewAxesProvider view,
                             tracking::RateToolSource::WorkingVolumeProvider volume);
+  /// Whether the scene has scissors the devices' instrument swap may take up (the main window:
+  /// the attempt's scene).
+  void setScissorsInScene(tracking::RateToolSource::ScissorsInScene scissors) { scissorsInScene_ = std::move(scissors); }
   /// Drives the tools with a 3D mouse through spacenavd; false with a user-readable reason
   /// (and the current source kept) when the daemon does not answer.
   bool useSpacenav(QString* error);
@@ -97,6 +100,7 @@ class CalibrationSession : public QObject {
   tracking::RateToolSource::ToolAnchor toolAnchor_;
   tracking::RateToolSource::ViewAxesProvider viewAxes_;
   tracking::RateToolSource::WorkingVolumeProvider workingVolume_;
+  tracking::RateToolSource::ScissorsInScene scissorsInScene_;
   assessment::SetupProfile profile_;
   calibration::SetupCalibration calibration_;
 };

@@ -1,5 +1,6 @@
 #include "gui/pages/attempt_page.h"
 
+#include "gui/number_format.h"
 #include "gui/session/attempt_session.h"
 #include "gui/settings/scene_overrides.h"
 #include "gui/settings/tunables.h"
@@ -57,6 +58,15 @@ AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
   status_ = new QLabel(this);
   status_->setWordWrap(true);
   status_->setObjectName(QStringLiteral("attemptStatus"));
+  cut_ = new QLabel(this);
+  cut_->setWordWrap(true);
+  cut_->setObjectName(QStringLiteral("attemptCut"));
+  cut_->hide();
+  tooShort_ = new QLabel(this);
+  tooShort_->setWordWrap(true);
+  tooShort_->setObjectName(QStringLiteral("attemptThreadTooShort"));
+  tooShort_->setStyleSheet(QStringLiteral("color: #b35900; font-weight: bold;"));
+  tooShort_->hide();
   finish_ = new QPushButton(tr("Finish attempt"), this);
   finish_->setObjectName(QStringLiteral("finishButton"));
   abandon_ = new QPushButton(tr("Abandon"), this);
@@ -68,6 +78,8 @@ AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
   side->addWidget(mode_);
   side->addWidget(steps_, 1);
   side->addWidget(status_);
+  side->addWidget(cut_);
+  side->addWidget(tooShort_);
   side->addWidget(finish_);
   side->addWidget(abandon_);
   auto* panel = new QWidget(this);
@@ -231,8 +243,23 @@ void AttemptPage::showProgress(const AttemptProgress& progress) {
     status_->clear();
     graspNoted_ = false;
   }
+  showCuts(progress);
   if (done == static_cast<int>(lesson_.steps.size()) && !replaying_ && isActive())
     status_->setText(tr("Every step is done: finish the attempt when you are ready."));
+}
+
+void AttemptPage::showCuts(const AttemptProgress& progress) {
+  const QString units = settings::Tunables::value(settings::unitsKey()).toString();
+  cut_->setVisible(progress.threadCuts > 0);
+  if (progress.threadCuts > 0)
+    cut_->setText(progress.lastCutEndMm >= 0.0
+                      ? tr("The scissors cut the thread: the cut end is %1 long.")
+                            .arg(NumberFormat::value(progress.lastCutEndMm, "mm", units))
+                      : tr("The scissors cut the thread: no stitch holds it on either side of the cut."));
+  tooShort_->setVisible(progress.threadTooShortMm >= 0.0);
+  if (progress.threadTooShortMm >= 0.0)
+    tooShort_->setText(tr("Too short to tie: the needle keeps only %1 of thread.")
+                           .arg(NumberFormat::value(progress.threadTooShortMm, "mm", units)));
 }
 
 QString AttemptPage::describe(const AttemptProblem& problem) {

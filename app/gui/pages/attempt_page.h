@@ -10,6 +10,10 @@
 //                   the attempt is stored as abandoned and abandoned follows.
 //   stop()          (leaving the page, closing the window) ends the run without a verdict:
 //                   the history marks the attempt interrupted when it is next opened.
+//
+// When the scissors cut the thread the page says so under the steps (object name
+// "attemptCut": the latest cut's cut-end length in the locale's format), and once a cut has
+// left the needle too little thread to tie, a warning stays ("attemptThreadTooShort").
 
 #include "gui/session/attempt_result.h"
 #include "lesson/lesson.h"
@@ -85,6 +89,7 @@ class AttemptPage : public QWidget {
 
  private:
   void showProgress(const AttemptProgress& progress);
+  void showCuts(const AttemptProgress& progress);
   void closeSession();
 
   assessment::HistoryDatabase* history_;
@@ -95,6 +100,8 @@ class AttemptPage : public QWidget {
   QLabel* mode_ = nullptr;
   QListWidget* steps_ = nullptr;
   QLabel* status_ = nullptr;
+  QLabel* cut_ = nullptr;
+  QLabel* tooShort_ = nullptr;
   QPushButton* finish_ = nullptr;
   QPushButton* abandon_ = nullptr;
 

@@ -70,6 +70,13 @@ void appendGuides(const std::vector<Guide>& guides, float field, DrawList& list)
   }
 }
 
+// the hand holds its forceps: the scene has one for it and the hand has not taken up another tool
+bool holdsForceps(const sim::SceneDef& def, const sim::RenderSnapshot& snapshot, int hand) {
+  const auto hs = static_cast<std::size_t>(hand);
+  return snapshot.forceps[hs].present && def.forceps[hs] && !snapshot.scalpels[hs].present &&
+         !snapshot.scissors[hs].present;
+}
+
 }  // namespace
 
 DrawMesh jawMeshOf(sim::Hand hand) { return hand == sim::Hand::Left ? DrawMesh::LeftJaw : DrawMesh::RightJaw; }
@@ -86,11 +93,11 @@ DrawList buildDrawList(const sim::SceneDef& def, const sim::RenderSnapshot& snap
   list.push_back(sceneItem(DrawKind::Background, DrawMesh::Background, kDrapeMaterial, false));
   list.push_back(sceneItem(DrawKind::Tissue, DrawMesh::Tissue, kVesselMaterial, true));
 
-  // the tools in the hands: a hand holding the scalpel has put its forceps down
+  // the tools in the hands: a hand holding the scalpel or the scissors has put its forceps down
   for (int h = 0; h < sim::kHandCount; ++h) {
     const auto hs = static_cast<std::size_t>(h);
     const sim::ToolSnapshot& forceps = snapshot.forceps[hs];
-    if (forceps.present && def.forceps[hs] && !snapshot.scalpels[hs].present) {
+    if (holdsForceps(def, snapshot, h)) {
       for (const Eigen::Matrix4f& jaw : forceps.jaws) {
         DrawItem item = sceneItem(DrawKind::ForcepsJaw, jawMeshOf(static_cast<sim::Hand>(h)), kJawMaterial, true);
         item.hand = h;
@@ -103,6 +110,19 @@ DrawList buildDrawList(const sim::SceneDef& def, const sim::RenderSnapshot& snap
       item.hand = h;
       item.model = toQMatrix(snapshot.scalpels[hs].pose);
       list.push_back(item);
+    }
+    const sim::ScissorsSnapshot& scissors = snapshot.scissors[hs];
+    if (scissors.present && def.scissors) {
+      for (const Eigen::Matrix4f& blade : scissors.blades) {
+        DrawItem item = sceneItem(DrawKind::Scissors, DrawMesh::ScissorsBlade, kBladeMaterial, true);
+        item.hand = h;
+        item.model = toQMatrix(blade);
+        list.push_back(item);
+      }
+      DrawItem shaft = sceneItem(DrawKind::Scissors, DrawMesh::ScissorsShaft, kJawMaterial, true);
+      shaft.hand = h;
+      shaft.model = toQMatrix(scissors.pose);
+      list.push_back(shaft);
     }
   }
 
@@ -124,7 +144,7 @@ DrawList buildDrawList(const sim::SceneDef& def, const sim::RenderSnapshot& snap
   for (int h = 0; h < sim::kHandCount; ++h) {
     const auto hs = static_cast<std::size_t>(h);
     const sim::ToolSnapshot& forceps = snapshot.forceps[hs];
-    if (!forceps.present || !def.forceps[hs] || snapshot.scalpels[hs].present) continue;
+    if (!holdsForceps(def, snapshot, h)) continue;
     const QVector3D tip(forceps.pose(0, 3), forceps.pose(1, 3), forceps.pose(2, 3));
     const float r = kTipRadius * field;
     list.push_back(markItem(DrawKind::TipMarker, DrawMesh::Reticle, h, tip, facing, {r, r, r}, tipColour(forceps)));

@@ -40,7 +40,7 @@ enum class DrawKind : std::uint8_t {
   Thread,
   ForcepsJaw,
   Scalpel,
-  Scissors,     ///< reserved for the scissors of issue #19; no scene declares them yet
+  Scissors,     ///< a hand's microscissors: two blades and the shaft
   TipMarker,    ///< where a forceps' jaws meet: a reticle, its centre open
   ContactCue,   ///< a ring around what a forceps' jaws would take if they closed now
   Guide,        ///< a Learn-mode mark (guide.h)
@@ -56,11 +56,13 @@ enum class DrawMesh : std::uint8_t {
   LeftJaw,      ///< the left forceps' jaw mesh, jaw frame (tool_meshes.h)
   RightJaw,     ///< the right forceps' jaw mesh, jaw frame
   ScalpelBlade, ///< the scalpel, blade frame (tool_meshes.h)
+  ScissorsBlade, ///< one scissors blade, blade frame (tool_meshes.h)
+  ScissorsShaft, ///< the scissors' shaft behind the pivot, tool frame
   Ring,         ///< unit circle in the xy plane, a tube of radius kRingTube (marker_meshes.h)
   Reticle,      ///< unit circle in the xy plane, a tube of radius kReticleTube
   Arrow,        ///< unit arrow from the origin along +z, shaft radius 1 (marker_meshes.h)
 };
-inline constexpr int kDrawMeshCount = 11;
+inline constexpr int kDrawMeshCount = 13;
 
 /// The jaw mesh of a hand's forceps.
 DrawMesh jawMeshOf(sim::Hand hand);
@@ -84,7 +86,9 @@ struct DrawItem {
 using DrawList = std::vector<DrawItem>;
 
 /// The items of one frame, in drawing order: the background, the tissue, each forceps' jaws
-/// (not while its hand holds the scalpel: the forceps is put down), each scalpel in a hand,
+/// (not while its hand holds the scalpel or the scissors: the forceps is put down), each
+/// scalpel in a hand, the scissors in a hand (both blades at the engine's pose and opening,
+/// then the shaft),
 /// the needle and the thread, then the marks drawn on top: tip markers, contact rings and
 /// guides. Marks are sized to the camera's field (a constant size on screen at the target).
 DrawList buildDrawList(const sim::SceneDef& def, const sim::RenderSnapshot& snapshot,

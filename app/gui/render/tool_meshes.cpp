@@ -53,4 +53,20 @@ ShadedMesh scalpelMesh(const sim::ScalpelDef& def) {
   return mesh;
 }
 
+ShadedMesh scissorsBladeMesh(const sim::ScissorsDef& def) {
+  const auto length = static_cast<float>(def.bladeLength);
+  const auto half = static_cast<float>(def.bladeHalfThickness);
+  ShadedMesh mesh;
+  appendToolBox({0.0f, 0.0f, -half}, {length, kScissorsBladeWidth, half}, mesh);
+  return mesh;
+}
+
+ShadedMesh scissorsShaftMesh(const sim::ScissorsDef& def) {
+  const auto pivot = static_cast<float>(def.bladeLength);
+  ShadedMesh mesh;
+  const std::vector<float> shaft{pivot, 0.0f, 0.0f, pivot + kScissorsShaftLength, 0.0f, 0.0f};
+  appendTube(shaft, 0, 1, {}, TubeStyle{kScissorsShaftRadius, 10, 1}, mesh);
+  return mesh;
+}
+
 }  // namespace microsim::gui

@@ -184,7 +184,7 @@ void AttemptSession::poll() {
   }
   const lesson::AttemptFacts facts = lesson::collectFacts(runner_->events(), runner_->pierces(), maxDisplacementMm_);
   AttemptProgress now{lesson::stepsDone(setup_.lesson, facts), lesson::guidesHit(setup_.lesson, facts, 0.1),
-                      facts.emptyGraspHand};
+                      facts.emptyGraspHand, facts.threadCuts, facts.lastCutEndMm, facts.threadTooShortMm};
   if (now == progress_) return;
   progress_ = std::move(now);
   Q_EMIT progressed(progress_);

@@ -62,6 +62,9 @@ struct AttemptProgress {
   int stepsDone = 0;            ///< steps whose conditions are met, in order
   std::vector<bool> guidesHit;  ///< per lesson guide: a pierce within 0.1 mm of its target
   int emptyGraspHand = -1;      ///< the hand whose latest grasp closed on nothing (progress.h), or −1
+  int threadCuts = 0;              ///< the scissors' cuts so far (progress.h)
+  double lastCutEndMm = -1.0;      ///< the latest cut's cut-end length, mm; −1 unanchored
+  double threadTooShortMm = -1.0;  ///< the thread left on the needle once too short to tie, mm; or −1
   bool operator==(const AttemptProgress&) const = default;
 };
 

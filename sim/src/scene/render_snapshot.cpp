@@ -2,6 +2,7 @@
 
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/tools/forceps.h"
+#include "microsim/sim/tools/microscissors.h"
 
 #include <cmath>
 
@@ -109,6 +110,18 @@ void fillSnapshot(const Scene& scene, RenderSnapshot& out) {
     const auto& blade = scene.blade(static_cast<Hand>(h));
     scalpel.present = blade.has_value();
     if (blade) scalpel.pose = blade->matrix().cast<float>();
+  }
+  for (int h = 0; h < kHandCount; ++h) {
+    const auto hand = static_cast<Hand>(h);
+    ScissorsSnapshot& scissors = out.scissors[static_cast<std::size_t>(h)];
+    const auto& held = scene.scissors(hand);
+    out.instruments[static_cast<std::size_t>(h)] = scene.instrument(hand);
+    scissors.present = held.has_value();
+    if (!held) continue;
+    scissors.pose = held->pose.matrix().cast<float>();
+    scissors.closure = held->closure;
+    const auto blades = tools::scissorsBladePoses(*scene.def().scissors, held->pose, held->closure);
+    for (std::size_t b = 0; b < 2; ++b) scissors.blades[b] = blades[b].matrix().cast<float>();
   }
   out.pierceCount = static_cast<int>(scene.pierces().size());
 }

@@ -90,6 +90,23 @@ std::array<Vec3, 2> scissorsBladeTips(const ScissorsDef& def, double closure) {
   return {Vec3(l - l * std::cos(theta), l * std::sin(theta), 0.0), Vec3(l - l * std::cos(theta), -l * std::sin(theta), 0.0)};
 }
 
+std::array<Eigen::Isometry3d, 2> scissorsBladePoses(const ScissorsDef& def, const Eigen::Isometry3d& pose,
+                                                    double closure) {
+  const double theta = (1.0 - std::clamp(closure, 0.0, 1.0)) * def.openingDeg * kDegToRad;
+  const Vec3 pivot(def.bladeLength, 0.0, 0.0);
+  std::array<Eigen::Isometry3d, 2> out;
+  for (std::size_t b = 0; b < 2; ++b) {
+    // turn about the pivot; the lower blade is the mirror image
+    Eigen::Isometry3d blade = Eigen::Isometry3d::Identity();
+    blade.translate(pivot);
+    blade.rotate(Eigen::AngleAxisd(b == 0 ? -theta : theta, Vec3::UnitZ()));
+    blade.translate(-pivot);
+    if (b == 1) blade.linear() = blade.linear() * Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal();
+    out[b] = pose * blade;
+  }
+  return out;
+}
+
 std::vector<ThreadCut> scissorsCuts(const ScissorsDef& def, const Eigen::Isometry3d& pose, double closureFrom,
                                     double closureTo, const Points& chain, const std::vector<std::uint8_t>& alive,
                                     int firstThreadLink, double threadRadius) {

@@ -80,6 +80,31 @@ TEST(LessonProgress, AnEmptyGraspIsAFactUntilAGraspHolds) {
   EXPECT_EQ(collectFacts({event(K::GraspEmpty, 0), event(K::GripSuture, 0)}, {}, 0.0).emptyGraspHand, -1);
 }
 
+TEST(LessonProgress, CutsCountAndTheLatestCutEndAndTooShortAreKept) {
+  const auto cutEvent = [](sim::SceneEventKind kind, double value) {
+    sim::SceneEvent e;
+    e.kind = kind;
+    e.hand = 1;
+    e.value = value;
+    return e;
+  };
+  using K = sim::SceneEventKind;
+  const AttemptFacts none = collectFacts({}, {}, 0.0);
+  EXPECT_EQ(none.threadCuts, 0);
+  EXPECT_EQ(none.lastCutEndMm, -1.0);
+  EXPECT_EQ(none.threadTooShortMm, -1.0);
+  // two cuts: the latest one's end; an unanchored cut (−1) is kept as it is
+  const AttemptFacts two = collectFacts({cutEvent(K::ThreadCut, 2.5), cutEvent(K::ThreadCut, 0.8)}, {}, 0.0);
+  EXPECT_EQ(two.threadCuts, 2);
+  EXPECT_EQ(two.lastCutEndMm, 0.8);
+  EXPECT_EQ(two.threadTooShortMm, -1.0);
+  const AttemptFacts loose =
+      collectFacts({cutEvent(K::ThreadCut, -1.0), cutEvent(K::ThreadTooShort, 1.4), cutEvent(K::GrabTissue, 0.0)}, {}, 0.0);
+  EXPECT_EQ(loose.threadCuts, 1);
+  EXPECT_EQ(loose.lastCutEndMm, -1.0);
+  EXPECT_EQ(loose.threadTooShortMm, 1.4);
+}
+
 // the shipped stitch recording completes lessons 02 and 03 (their targets sit where it pierces)
 TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
   sim::Recording recording;

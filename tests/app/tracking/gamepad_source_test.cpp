@@ -135,6 +135,43 @@ TEST_F(GamepadSourceWithPad, TriggersCloseEachHandsJawsGraduallyAndShouldersChoo
   source.stop();
 }
 
+TEST_F(GamepadSourceWithPad, YSwapsTheActiveHandsForcepsForTheScissorsAndTheTriggerClosesThem) {
+  GamepadSource source(steppedByTheTest());
+  source.setTools(gamepadTools({-1, 0, 0}, {1, 0, 0}));
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  source.start();
+  ASSERT_TRUE(source.status().connected);
+
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, true);
+  source.advance(0.01);
+  source.advance(0.01);  // held: one swap
+  ASSERT_GE(frames.count(), 1);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Left).instrument, sim::Instrument::Forceps);
+  pad.setTrigger(SDL_CONTROLLER_AXIS_TRIGGERRIGHT, 1.0);
+  source.advance(0.01);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).closure, 1.0);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+
+  // released and pressed again: the forceps, taken up open
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, false);
+  source.advance(0.01);
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, true);
+  source.advance(0.01);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
+  EXPECT_EQ(lastGamepadFrame(frames).hand(sim::Hand::Right).closure, 0.0);
+
+  // a scene without scissors: Y swaps nothing
+  source.setScissorsInScene([] { return false; });
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, false);
+  source.advance(0.01);
+  const qsizetype before = frames.count();
+  pad.setButton(SDL_CONTROLLER_BUTTON_Y, true);
+  source.advance(0.01);
+  EXPECT_EQ(frames.count(), before);
+  source.stop();
+}
+
 TEST_F(GamepadSourceWithPad, AMotionStartsFromTheToolsWhereTheSceneShowsThem) {
   GamepadSource source(steppedByTheTest());
   sim::InputFrame shown = gamepadTools({-2, 0, 0}, {2, 0, 0});

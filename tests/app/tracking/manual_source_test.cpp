@@ -63,6 +63,49 @@ TEST(ManualSource, KeysMoveTheActiveTipByTheDocumentedStepInTheView) {
   EXPECT_FALSE(source.handleKey(Qt::Key_P, Qt::NoModifier, true, false));
 }
 
+TEST(ManualSource, TSwapsTheActiveHandsForcepsForTheScissorsAndBackWhereTheSceneHasThem) {
+  sim::SceneDef withScissors;
+  withScissors.scissors = sim::ScissorsDef{};
+  ManualSource source;
+  source.placeTools(withScissors);
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  QSignalSpy instruments(&source, &ManualSource::instrumentChanged);
+  source.start();
+  ASSERT_EQ(source.activeHand(), sim::Hand::Right);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
+
+  // the jaws half closed, then T: the scissors are taken up open, the other hand keeps its forceps
+  source.setClosure(0.5);
+  EXPECT_TRUE(source.handleKey(Qt::Key_T, Qt::NoModifier, true, false));
+  EXPECT_TRUE(source.handleKey(Qt::Key_T, Qt::NoModifier, false, false));
+  EXPECT_TRUE(source.handleKey(Qt::Key_T, Qt::NoModifier, true, true));  // a key repeat swaps nothing
+  ASSERT_EQ(instruments.count(), 1);
+  EXPECT_EQ(instruments.last().at(1).value<sim::Instrument>(), sim::Instrument::Scissors);
+  sim::InputFrame now = lastFrame(frames);
+  EXPECT_EQ(now.hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+  EXPECT_EQ(now.hand(sim::Hand::Right).closure, 0.0);
+  EXPECT_EQ(now.hand(sim::Hand::Left).instrument, sim::Instrument::Forceps);
+
+  // the jaw keys close the blades by the same steps
+  EXPECT_TRUE(source.handleKey(Qt::Key_C, Qt::NoModifier, true, false));
+  EXPECT_DOUBLE_EQ(lastFrame(frames).hand(sim::Hand::Right).closure, ManualSource::kClosureStep);
+  EXPECT_EQ(lastFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+
+  // T again: the forceps, open
+  EXPECT_TRUE(source.handleKey(Qt::Key_T, Qt::NoModifier, true, false));
+  now = lastFrame(frames);
+  EXPECT_EQ(now.hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
+  EXPECT_EQ(now.hand(sim::Hand::Right).closure, 0.0);
+
+  // a scene without scissors: T is the map's but swaps nothing
+  source.placeTools(sim::SceneDef{});
+  const qsizetype before = frames.count();
+  EXPECT_TRUE(source.handleKey(Qt::Key_T, Qt::NoModifier, true, false));
+  EXPECT_EQ(frames.count(), before);
+  EXPECT_FALSE(source.switchActiveInstrument());
+  EXPECT_EQ(source.current().hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
+}
+
 TEST(ManualSource, NothingIsEmittedWhenStopped) {
   ManualSource source;
   QSignalSpy frames(&source, &TrackerSource::frameReady);

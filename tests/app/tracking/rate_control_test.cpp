@@ -81,6 +81,18 @@ TEST(RateControl, TheToolsShownBecomeTheFrameThatPutsThemThere) {
   EXPECT_LT(hand.orientation.angularDistance(Eigen::Quaterniond(pose.linear())), 1e-6);
   sim::InputRejection why{};
   EXPECT_TRUE(sim::validateFrame(*frame, why));
+  EXPECT_EQ(hand.instrument, sim::Instrument::Forceps);
+
+  // a hand that holds the scissors: the instrument and the blades' closure, not the put-down jaws'
+  snapshot.instruments[1] = sim::Instrument::Scissors;
+  snapshot.scissors[1].present = true;
+  snapshot.scissors[1].pose = right.pose;
+  snapshot.scissors[1].closure = 0.4;
+  right.closure = 0.0;
+  const std::optional<sim::InputFrame> cutting = toolsShown(snapshot);
+  ASSERT_TRUE(cutting.has_value());
+  EXPECT_EQ(cutting->hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+  EXPECT_EQ(cutting->hand(sim::Hand::Right).closure, 0.4);
 }
 
 }  // namespace

@@ -33,10 +33,11 @@ TEST(SpacenavMapping, AnEventMovesForItsPeriodButNoLongerThanTheLongestStep) {
   EXPECT_EQ(spacenavStep({0, 0, 0, 0, 0, 0, 4000}), SpacenavScale{}.maxStepS);  // after a rest
 }
 
-TEST(SpacenavMapping, ButtonZeroHoldsTheJawsAndButtonOneSwitchesTheHand) {
+TEST(SpacenavMapping, ButtonZeroHoldsTheJawsOneSwitchesTheHandTwoTheInstrument) {
   EXPECT_EQ(spacenavButtonAction(0), SpacenavButtonAction::HoldJaws);
   EXPECT_EQ(spacenavButtonAction(1), SpacenavButtonAction::SwitchHand);
-  EXPECT_EQ(spacenavButtonAction(2), SpacenavButtonAction::None);
+  EXPECT_EQ(spacenavButtonAction(2), SpacenavButtonAction::SwitchInstrument);
+  EXPECT_EQ(spacenavButtonAction(3), SpacenavButtonAction::None);
 }
 
 }  // namespace

@@ -101,6 +101,35 @@ TEST(SpacenavSource, TheCapMovesTurnsAndClosesTheActiveToolThroughLibspnav) {
   source.stop();
 }
 
+TEST(SpacenavSource, TheThirdButtonSwapsTheActiveHandsForcepsForTheScissors) {
+  testing::FakeSpacenavd daemon;
+  SpacenavSource source;
+  source.setTools(spacenavStartTools());
+  QSignalSpy frames(&source, &TrackerSource::frameReady);
+  source.start();
+  ASSERT_TRUE(source.status().connected) << source.status().lastError.toStdString();
+  ASSERT_TRUE(daemon.handshakeDone());
+
+  // pressed: the scissors, taken up open; released: nothing more
+  daemon.sendButton(2, true);
+  daemon.sendButton(2, false);
+  ASSERT_TRUE(waitForSpacenavFrames(frames, 1));
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Scissors);
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Right).closure, 0.0);
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Left).instrument, sim::Instrument::Forceps);
+
+  // the left button closes the blades as it closes jaws; pressed again, the forceps is back
+  daemon.sendButton(0, true);
+  ASSERT_TRUE(waitForSpacenavFrames(frames, 2));
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Right).closure, 1.0);
+  daemon.sendButton(2, true);
+  ASSERT_TRUE(waitForSpacenavFrames(frames, 3));
+  EXPECT_EQ(frames.count(), 3);
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Right).instrument, sim::Instrument::Forceps);
+  EXPECT_EQ(lastSpacenavFrame(frames).hand(sim::Hand::Right).closure, 0.0);
+  source.stop();
+}
+
 TEST(SpacenavSource, WithoutADaemonItSaysSoAndProducesNothing) {
   if (realDaemonConfigured()) GTEST_SKIP() << "a spacenavd socket or /etc/spnavrc exists on this machine";
   QTemporaryDir dir;

@@ -1,10 +1,12 @@
 // The snapshot the viewport draws: it mirrors the scene's state after a step (positions,
-// unit normals pointing out of the wall, the suture, the forceps' poses, a scalpel in a hand,
-// what each forceps' jaws would close on), and refilling it follows the scene as it moves.
+// unit normals pointing out of the wall, the suture, the forceps' poses, a scalpel or the
+// scissors in a hand and what each hand holds, what each forceps' jaws would close on), and
+// refilling it follows the scene as it moves.
 #include "microsim/sim/scene/render_snapshot.h"
 
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/stitch_script.h"
+#include "microsim/sim/tools/microscissors.h"
 
 #include <gtest/gtest.h>
 
@@ -160,6 +162,43 @@ TEST(RenderSnapshot, CarriesTheScalpelWhileAHandHoldsIt) {
   scene.step(frame);
   fillSnapshot(scene, snap);
   EXPECT_FALSE(snap.scalpels[1].present);
+}
+
+TEST(RenderSnapshot, CarriesEachHandsInstrumentAndTheScissorsWhileAHandHoldsThem) {
+  Scene scene(renderSnapshotAnastomosis());
+  ASSERT_TRUE(scene.def().scissors);
+  RenderSnapshot snap;
+  fillSnapshot(scene, snap);
+  EXPECT_FALSE(snap.scissors[0].present || snap.scissors[1].present);
+
+  InputFrame frame;
+  frame.time = scene.dt();
+  for (HandInput& hand : frame.hands) hand.tracked = true;
+  frame.hand(Hand::Left).position = Vec3(-1.5, 0.0, 3.0);
+  HandInput& h = frame.hand(Hand::Right);
+  h.instrument = Instrument::Scissors;
+  h.position = Vec3(0.5, -0.2, 4.0);
+  h.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Vec3::UnitY()));
+  h.closure = 0.35;
+  scene.step(frame);
+  fillSnapshot(scene, snap);
+  EXPECT_EQ(snap.instruments[0], Instrument::Forceps);
+  EXPECT_EQ(snap.instruments[1], Instrument::Scissors);
+  ASSERT_TRUE(snap.scissors[1].present);
+  EXPECT_FALSE(snap.scissors[0].present);
+  const Eigen::Isometry3d pose = Eigen::Translation3d(h.position) * h.orientation;
+  EXPECT_TRUE(snap.scissors[1].pose.isApprox(pose.matrix().cast<float>()));
+  EXPECT_DOUBLE_EQ(snap.scissors[1].closure, 0.35);
+  const auto blades = tools::scissorsBladePoses(*scene.def().scissors, pose, 0.35);
+  for (std::size_t b = 0; b < 2; ++b) EXPECT_TRUE(snap.scissors[1].blades[b].isApprox(blades[b].matrix().cast<float>()));
+
+  // put down again: the forceps is back in the hand
+  h.instrument = Instrument::Forceps;
+  frame.time += scene.dt();
+  scene.step(frame);
+  fillSnapshot(scene, snap);
+  EXPECT_FALSE(snap.scissors[1].present);
+  EXPECT_EQ(snap.instruments[1], Instrument::Forceps);
 }
 
 }  // namespace

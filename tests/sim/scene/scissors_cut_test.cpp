@@ -1,14 +1,19 @@
 // Microscissors in the shipped scene: after the shipped stitch, scissors closed across the
 // short tail a millimetre beyond the first entry cut it there and report the end left at the
 // stitch; the needle keeps the rest, and a cut next to the needle reports a thread too short to
-// tie; scissors that close beside the thread, or are taken up closed, cut nothing.
+// tie; scissors that close beside the thread, or are taken up closed, cut nothing; frames with
+// the scissors, written to a recording and read back, replay to the same state and cut.
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/suture/suture_model.h"
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <variant>
 #include <vector>
@@ -138,6 +143,44 @@ TEST(ScissorsCut, TheThreadIsCutWhereTheBladesCloseAndTheEndIsMeasured) {
   EXPECT_EQ(shorts.empty(), kept >= scene.def().needle->minTieLength);
   // the cut pieces stay finite as they fall
   EXPECT_TRUE(scene.sutureState()->x.allFinite());
+}
+
+TEST(ScissorsCut, ScissorsFramesWrittenToARecordingReplayToTheSameStateAndCut) {
+  Recording rec;
+  ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
+  Stitched s = stitched();
+  const suture::SutureState& st = *s.scene->sutureState();
+  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), 1.0);
+  for (const InputFrame& f : closeScissors(s.last, scissorsAcross(point, along, 0.0))) {
+    s.scene->step(f);
+    rec.frames.push_back(f);
+  }
+  ASSERT_EQ(eventsOf(*s.scene, SceneEventKind::ThreadCut).size(), 1u);
+
+  // through a file, as an attempt writes it
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("microsim-scissors-" + std::to_string(::getpid()) + ".msrec")).string();
+  RecordingWriter writer;
+  ASSERT_TRUE(writer.open(path, rec.scene, rec.metadata).ok());
+  for (const InputFrame& f : rec.frames) ASSERT_TRUE(writer.append(f).ok());
+  ASSERT_TRUE(writer.finish().ok());
+  Recording back;
+  ASSERT_TRUE(readRecording(path, back).ok());
+  std::remove(path.c_str());
+  ASSERT_EQ(back.frames.size(), rec.frames.size());
+  EXPECT_TRUE(std::equal(back.frames.begin(), back.frames.end(), rec.frames.begin()));
+  EXPECT_EQ(back.frames.back().hand(Hand::Right).instrument, Instrument::Scissors);
+
+  // replayed on a fresh scene: the same state to the bit, the same cut
+  Scene replay(shippedScene());
+  for (const InputFrame& f : back.frames) replay.step(f);
+  EXPECT_EQ(replay.hash(), s.scene->hash());
+  const std::vector<SceneEvent> live = eventsOf(*s.scene, SceneEventKind::ThreadCut);
+  const std::vector<SceneEvent> replayed = eventsOf(replay, SceneEventKind::ThreadCut);
+  ASSERT_EQ(replayed.size(), 1u);
+  EXPECT_EQ(replayed[0].index, live[0].index);
+  EXPECT_EQ(replayed[0].step, live[0].step);
+  EXPECT_EQ(replayed[0].value, live[0].value);
 }
 
 TEST(ScissorsCut, ACutNextToTheNeedleLeavesTooLittleToTie) {

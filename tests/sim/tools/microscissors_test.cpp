@@ -43,6 +43,24 @@ TEST(Microscissors, BladeTipsMeetAtTheToolTipWhenClosed) {
   EXPECT_NEAR(open[1].y(), -def.bladeLength * std::sin(theta), 1e-12);
 }
 
+TEST(Microscissors, BladePosesPutEachBladeTipAtItsTipAndEveryBladeOnThePivot) {
+  ScissorsDef def;
+  const Eigen::Isometry3d pose = bladesDownAt(Vec3(0.3, -0.2, 1.5));
+  for (const double closure : {0.0, 0.4, 1.0}) {
+    const auto blades = scissorsBladePoses(def, pose, closure);
+    const auto tips = scissorsBladeTips(def, closure);
+    for (std::size_t b = 0; b < 2; ++b) {
+      // the blade frame's origin is the blade's tip, its (L, 0, 0) the pivot
+      EXPECT_TRUE((blades[b] * Vec3::Zero()).isApprox(pose * tips[b], 1e-12)) << closure << " blade " << b;
+      EXPECT_TRUE((blades[b] * Vec3(def.bladeLength, 0.0, 0.0)).isApprox(pose * Vec3(def.bladeLength, 0.0, 0.0), 1e-12));
+    }
+    // the lower blade is the upper one mirrored in the tool's y: its back faces away from the upper's
+    const Vec3 upperBack = blades[0].linear() * Vec3::UnitY(), lowerBack = blades[1].linear() * Vec3::UnitY();
+    EXPECT_NEAR(upperBack.dot(pose.linear() * Vec3::UnitY()), std::cos((1.0 - closure) * def.openingDeg * 3.14159265358979323846 / 180.0), 1e-12);
+    EXPECT_NEAR(lowerBack.dot(pose.linear() * Vec3::UnitY()), -upperBack.dot(pose.linear() * Vec3::UnitY()), 1e-12);
+  }
+}
+
 TEST(Microscissors, ClosingOnAStrandCutsItOnceWhereTheBladesMeet) {
   ScissorsDef def;
   // the thread runs along x at y = 0.2 (between the open blades, 0.2 mm behind the tip);

@@ -6,6 +6,7 @@
 
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/tools/forceps.h"
+#include "microsim/sim/tools/microscissors.h"
 
 #include <gtest/gtest.h>
 
@@ -171,6 +172,58 @@ TEST(DrawList, AHandHoldingTheScalpelPutsItsForcepsDown) {
   EXPECT_TRUE(itemsOf(list, DrawKind::TipMarker, 0).empty());
 }
 
+TEST(DrawList, TheScissorsInAHandAppearWithTheEnginesPoseAndOpeningAndOnlyThere) {
+  const sim::SceneDef def = loadDrawListScene(kDrawListScenes + "/anastomosis.json");
+  ASSERT_TRUE(def.scissors);
+  sim::Scene scene(def);
+  sim::InputFrame frame;
+  frame.time = scene.dt();
+  frame.hands[0] = toolAt(sim::Instrument::Forceps, Eigen::Vector3d(-2.0, 1.0, 3.0), 0.0);
+  frame.hands[1] = toolAt(sim::Instrument::Scissors, Eigen::Vector3d(1.5, 1.0, 3.0), 0.4);
+  scene.step(frame);
+  sim::RenderSnapshot snapshot;
+  sim::fillSnapshot(scene, snapshot);
+  ASSERT_TRUE(snapshot.scissors[1].present);
+  const DrawList list = buildDrawList(def, snapshot, cameraOf(def), {});
+
+  // the right hand: two blades at the engine's blade poses for this opening, the shaft at the
+  // tool's pose; its forceps is put down
+  const Eigen::Isometry3d pose = Eigen::Translation3d(frame.hands[1].position) * frame.hands[1].orientation;
+  const auto blades = sim::tools::scissorsBladePoses(*def.scissors, pose, 0.4);
+  const auto scissors = itemsOf(list, DrawKind::Scissors, 1);
+  ASSERT_EQ(scissors.size(), 3u);
+  for (std::size_t b = 0; b < 2; ++b) {
+    EXPECT_EQ(scissors[b]->mesh, DrawMesh::ScissorsBlade);
+    EXPECT_TRUE(sameMatrix(scissors[b]->model, fromIsometry(blades[b]))) << "blade " << b;
+    EXPECT_TRUE(scissors[b]->castsShadow);
+  }
+  EXPECT_EQ(scissors[2]->mesh, DrawMesh::ScissorsShaft);
+  EXPECT_TRUE(sameMatrix(scissors[2]->model, fromIsometry(pose)));
+  EXPECT_TRUE(itemsOf(list, DrawKind::ForcepsJaw, 1).empty());
+  EXPECT_TRUE(itemsOf(list, DrawKind::TipMarker, 1).empty());
+  // the blade tips drawn where the engine has them: open by the closure's angle
+  const auto tips = sim::tools::scissorsBladeTips(*def.scissors, 0.4);
+  for (std::size_t b = 0; b < 2; ++b) {
+    const QVector3D drawn = scissors[b]->model.map(QVector3D(0, 0, 0));
+    const Eigen::Vector3d engine = pose * tips[b];
+    EXPECT_NEAR(drawn.x(), engine.x(), 1e-5);
+    EXPECT_NEAR(drawn.y(), engine.y(), 1e-5);
+    EXPECT_NEAR(drawn.z(), engine.z(), 1e-5);
+  }
+  // the left hand holds its forceps: no scissors there, its jaws are drawn
+  EXPECT_TRUE(itemsOf(list, DrawKind::Scissors, 0).empty());
+  EXPECT_EQ(itemsOf(list, DrawKind::ForcepsJaw, 0).size(), 2u);
+
+  // the scissors put down: gone, the forceps back
+  frame.time += scene.dt();
+  frame.hands[1].instrument = sim::Instrument::Forceps;
+  scene.step(frame);
+  sim::fillSnapshot(scene, snapshot);
+  const DrawList back = buildDrawList(def, snapshot, cameraOf(def), {});
+  EXPECT_TRUE(itemsOf(back, DrawKind::Scissors).empty());
+  EXPECT_EQ(itemsOf(back, DrawKind::ForcepsJaw, 1).size(), 2u);
+}
+
 TEST(DrawList, TheShadowPassDrawsTheLitListsCastersAndNothingElse) {
   const sim::SceneDef def = loadDrawListScene(kDrawListScenes + "/anastomosis.json");
   sim::Scene scene(def);
@@ -195,6 +248,7 @@ TEST(DrawList, TheShadowPassDrawsTheLitListsCastersAndNothingElse) {
   EXPECT_EQ(casters.size(), 7u);
   for (const DrawItem& i : list) {
     const bool matter = i.kind == DrawKind::Tissue || i.kind == DrawKind::ForcepsJaw || i.kind == DrawKind::Scalpel ||
+                        i.kind == DrawKind::Scissors ||
                         i.kind == DrawKind::Needle || i.kind == DrawKind::Thread;
     EXPECT_EQ(i.castsShadow, matter) << static_cast<int>(i.kind);
     EXPECT_EQ(i.onTop, i.kind == DrawKind::TipMarker || i.kind == DrawKind::ContactCue || i.kind == DrawKind::Guide);

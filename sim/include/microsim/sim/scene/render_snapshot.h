@@ -1,7 +1,8 @@
 #pragma once
 // What the viewport draws of one simulated step (DESIGN.md §Data flow of one frame): the
-// tissue's positions and per-vertex normals, the suture's nodes, each tool's pose, and what
-// each forceps' jaws would close on now (the contact cue; Scene::betweenJaws).
+// tissue's positions and per-vertex normals, the suture's nodes, what each hand holds, each
+// tool's pose, and what each forceps' jaws would close on now (the contact cue;
+// Scene::betweenJaws).
 //
 // The simulation thread fills a snapshot after each step and hands it over (double buffer or
 // short lock); the GUI thread only reads it. Everything is a plain value: floats laid out
@@ -11,6 +12,8 @@
 // moves. `fill` reuses the snapshot's buffers, so a steady stream of steps allocates nothing.
 //
 // Units: millimetres, seconds.
+
+#include "microsim/sim/scene/input_frame.h"
 
 #include <Eigen/Geometry>
 
@@ -55,6 +58,16 @@ struct ScalpelSnapshot {
   Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
 };
 
+/// Microscissors in a hand: present while the hand holds them (InputFrame's instrument) and
+/// the scene declares them; the tool frame → scene, how closed, and each blade's transform
+/// (blade frame → scene, tools::scissorsBladePoses: [0] upper, [1] lower, mirrored in y).
+struct ScissorsSnapshot {
+  bool present = false;
+  Eigen::Matrix4f pose = Eigen::Matrix4f::Identity();
+  double closure = 0.0;  ///< 0 open .. 1 closed
+  std::array<Eigen::Matrix4f, 2> blades{Eigen::Matrix4f::Identity(), Eigen::Matrix4f::Identity()};
+};
+
 struct RenderSnapshot {
   double time = 0.0;  ///< s, scene time at the end of the step
   int steps = 0;
@@ -72,6 +85,9 @@ struct RenderSnapshot {
   float sutureRadius = 0.0f;  ///< mm, the thread's contact radius
   std::array<ToolSnapshot, 2> forceps;  ///< by hand: [0] left, [1] right
   std::array<ScalpelSnapshot, 2> scalpels;  ///< by hand: [0] left, [1] right
+  std::array<ScissorsSnapshot, 2> scissors;  ///< by hand: [0] left, [1] right
+  /// What each hand held in the last frame stepped (Scene::instrument), by hand.
+  std::array<Instrument, kHandCount> instruments{Instrument::Forceps, Instrument::Forceps};
   int pierceCount = 0;                  ///< pierce events so far
 };
 

@@ -140,6 +140,11 @@ class Scene {
   /// faces not held by the other hand; a needle holder takes no tissue). Empty without a
   /// forceps. The viewport's contact cue asks it with the closure the jaws have now.
   BetweenJaws betweenJaws(Hand hand, double closure) const;
+  /// The instrument `hand` held in the last frame stepped (InputFrame's default, the forceps,
+  /// before the first).
+  Instrument instrument(Hand hand) const {
+    return lastFrame_ ? lastFrame_->hand(hand).instrument : HandInput{}.instrument;
+  }
   /// The scalpel's pose (blade frame → scene) while `hand` holds it; none otherwise.
   const std::optional<Eigen::Isometry3d>& blade(Hand hand) const {
     return blade_[static_cast<std::size_t>(hand)];

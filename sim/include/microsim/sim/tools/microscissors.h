@@ -46,6 +46,13 @@ struct ThreadCut {
 /// The blade tips at `closure` in the tool frame: [0] upper, [1] lower (mm).
 std::array<Vec3, 2> scissorsBladeTips(const ScissorsDef& def, double closure);
 
+/// Each blade's transform at `closure`, blade frame → scene: [0] upper, [1] lower (mirrored
+/// in y, as the forceps' jaws: tools::jawPoses). The blade frame has the blade's tip at the
+/// origin and runs back along +x to the pivot at (bladeLength, 0, 0); the cutting edge is
+/// that x axis, the blade's back lies towards +y. Its origin is scissorsBladeTips' tip.
+std::array<Eigen::Isometry3d, 2> scissorsBladePoses(const ScissorsDef& def, const Eigen::Isometry3d& pose,
+                                                    double closure);
+
 /// The cuts of blades at `pose` closing from `closureFrom` to `closureTo` through the chain
 /// at positions `chain` (3 by N + 1, links i = (i, i + 1) with alive[i]); links below
 /// `firstThreadLink` are the needle's. None unless the closure crosses def.cutAt upwards.
