@@ -22,6 +22,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <tuple>
+
 namespace microsim::gui {
 
 namespace {
@@ -97,6 +99,17 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   window.viewport()->update();
   if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
   if (!saveScreenShot(window, out.filePath(QStringLiteral("attempt-learn.png")), written, inspect)) return fail(QStringLiteral("attempt"));
+
+  // the microscope's picture alone: from straight above, and from the oblique view turned
+  // 40° about the table so the cut ends face the eye and the lumen shows
+  for (const auto& [view, yaw, name] : {std::tuple{NamedView::Top, 0.0f, QStringLiteral("microscope-top.png")},
+                                        std::tuple{NamedView::Oblique, 40.0f, QStringLiteral("microscope-oblique.png")}}) {
+    window.viewport()->showView(view);
+    window.viewport()->camera().orbit(yaw, 0.0f);
+    window.viewport()->cameraChanged();
+    if (!saveScreenShot(*window.viewport(), out.filePath(name), written, inspect)) return fail(name);
+  }
+  window.viewport()->showView(NamedView::Microscope);
 
   // the whole stitch, scored
   attempt->replay(stitch.frames, true);
