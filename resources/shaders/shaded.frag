@@ -103,9 +103,18 @@ vec3 tissueLight(vec3 n, vec3 v, vec3 dir, vec3 colour, vec3 base) {
 
 #endif
 
+// the light the field stop lets through here (render/eyepiece_pass.h): a slight fall-off
+// toward the edge, black beyond it; all of it without a stop
+float fieldStopLight() {
+  if (fieldStop.z <= 0.0) return 1.0;
+  float r = length(gl_FragCoord.xy - fieldStop.xy);
+  float edge = clamp(r / fieldStop.z, 0.0, 1.0);
+  return (1.0 - 0.22 * edge * edge * edge) * (1.0 - smoothstep(fieldStop.z - fieldStop.w, fieldStop.z, r));
+}
+
 void main() {
   if (flatMode) {
-    fragColor = flatColour;
+    fragColor = vec4(flatColour.rgb * fieldStopLight(), flatColour.a);
     return;
   }
   vec3 n = normalize(eyeNormal);
@@ -135,11 +144,5 @@ void main() {
   c = mix(c, vec3(grey) * 0.8 + 0.2 * fogColour, 0.6 * blur);
   float fog = clamp((depth - fogStart) / max(fogEnd - fogStart, 1e-3), 0.0, 1.0);
   c = mix(c, fogColour, 0.7 * fog);
-  // the field stop (render/eyepiece_pass.h): a slight fall-off toward the edge, black beyond it
-  if (fieldStop.z > 0.0) {
-    float r = length(gl_FragCoord.xy - fieldStop.xy);
-    float edge = clamp(r / fieldStop.z, 0.0, 1.0);
-    c *= (1.0 - 0.22 * edge * edge * edge) * (1.0 - smoothstep(fieldStop.z - fieldStop.w, fieldStop.z, r));
-  }
-  fragColor = vec4(pow(c, vec3(1.0 / 2.2)), focusInAlpha ? blur : 1.0);
+  fragColor = vec4(pow(c, vec3(1.0 / 2.2)) * fieldStopLight(), focusInAlpha ? blur : 1.0);
 }

@@ -131,23 +131,30 @@ void zoomOutToTheWholeThread(Fixture& f) {
   f.view->cameraChanged();
 }
 
+// where every third node of the thread in the runner's latest snapshot lands on the image
+std::vector<QPoint> threadNodesOnImage(const Fixture& f, const QImage& image) {
+  const auto s = f.runner.latestSnapshot();
+  EXPECT_TRUE(s);
+  std::vector<QPoint> points;
+  if (!s) return points;
+  const int nodes = static_cast<int>(s->suturePositions.size() / 3);
+  EXPECT_GT(nodes, s->needleNodes + 10);
+  for (int i = s->needleNodes + 2; i < nodes; i += 3) {
+    const auto k = 3 * static_cast<std::size_t>(i);
+    const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
+    if (p) points.push_back(*p);
+  }
+  return points;
+}
+
 TEST(Viewport, DrawsTheSutureAsATubeWhereTheSnapshotHasIt) {
   Fixture f;
   zoomOutToTheWholeThread(f);
   const QImage image = f.draw();
-  const auto s = f.runner.latestSnapshot();
-  ASSERT_TRUE(s);
-  const int nodes = static_cast<int>(s->suturePositions.size() / 3);
-  ASSERT_GT(nodes, s->needleNodes + 10);
-  int visible = 0;
+  const std::vector<QPoint> nodes = threadNodesOnImage(f, image);
+  const auto visible = static_cast<int>(nodes.size());
   int found = 0;
-  for (int i = s->needleNodes + 2; i < nodes; i += 3) {
-    const auto k = 3 * static_cast<std::size_t>(i);
-    const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
-    if (!p) continue;
-    ++visible;
-    if (anyNear(image, *p, 2, threadBlue)) ++found;
-  }
+  for (const QPoint& p : nodes) found += anyNear(image, p, 2, threadBlue) ? 1 : 0;
   ASSERT_GE(visible, 3);
   EXPECT_GE(found, visible * 8 / 10) << found << " of " << visible;
   // and nowhere far from it: the image's blue pixels are few
@@ -324,22 +331,17 @@ TEST(Viewport, TheThreadContrastsWithWhatIsAroundIt) {
   // far out: the thread is as thin as the viewport ever draws it (about a pixel's radius)
   zoomOutToTheWholeThread(f);
   const QImage image = f.draw();
-  const auto s = f.runner.latestSnapshot();
-  ASSERT_TRUE(s);
-  const int nodes = static_cast<int>(s->suturePositions.size() / 3);
   int visible = 0;
   int contrasting = 0;
-  for (int i = s->needleNodes + 2; i < nodes; i += 3) {
-    const auto k = 3 * static_cast<std::size_t>(i);
-    const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
-    if (!p || QLineF(*p, QPointF(400, 300)).length() > 270.0) continue;  // within the field
+  for (const QPoint& node : threadNodesOnImage(f, image)) {
+    if (QLineF(node, QPointF(400, 300)).length() > 270.0) continue;  // within the field
     ++visible;
     // the thread pixel near the node against the brightest pixel a few pixels around it
     int thread = 255;
     int around = 0;
     for (int dy = -5; dy <= 5; ++dy)
       for (int dx = -5; dx <= 5; ++dx) {
-        const QPoint q = *p + QPoint(dx, dy);
+        const QPoint q = node + QPoint(dx, dy);
         if (!image.valid(q)) continue;
         const int l = luminance(image.pixel(q));
         if (std::abs(dx) <= 2 && std::abs(dy) <= 2 && threadBlue(image.pixel(q))) thread = std::min(thread, l);
