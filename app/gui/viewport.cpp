@@ -349,6 +349,7 @@ void Viewport::drawEye(Eye eye, const QRect& area, const DrawList& list) {
   // black where nothing is drawn, as outside the field stop; for the blur, alpha 0: in focus
   glClearColor(0.0f, 0.0f, 0.0f, blur ? 0.0f : 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  eyepiece_.maskOutsideField(*this, glArea);
   const float aspect = static_cast<float>(area.width()) / static_cast<float>(std::max(1, area.height()));
   const float focus = camera_.focusDistance();
   setDepthCues(focus, std::max(0.3f, 0.025f * camera_.distance()), focus + 0.5f,

@@ -13,7 +13,7 @@
 //
 // Depth cues of the microscope: contrast and saturation fall off away from the focal plane,
 // and what lies beyond it darkens toward the background. The eyepiece's field stop is applied
-// here, per fragment (free, where a pass of its own would cost a software rasteriser a third of
+// here, per fragment (free, where a pass of its own would cost a software rasteriser a good part of
 // its frame rate). With `focusInAlpha` the output's
 // alpha is how far out of focus the fragment is (0 sharp .. 1), for the eyepiece pass's blur
 // (render/eyepiece_pass.h); otherwise it is 1.

@@ -7,6 +7,8 @@
 #include <QOpenGLShaderProgram>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace microsim::gui {
 
@@ -31,6 +33,27 @@ EyepieceField eyepieceField(const QRect& area) {
   return {QPointF(area.x() + 0.5 * area.width(), area.y() + 0.5 * area.height()), radius, kFieldEdgeFraction * 2.0f * radius};
 }
 
+std::vector<float> fieldMaskTriangles(const QRect& area, int segments) {
+  const EyepieceField field = eyepieceField(area);
+  const float halfWidth = 0.5f * static_cast<float>(std::max(1, area.width()));
+  const float halfHeight = 0.5f * static_cast<float>(std::max(1, area.height()));
+  const float outer = 2.0f * std::max(halfWidth, halfHeight);  // past every corner
+  std::vector<float> out;
+  out.reserve(static_cast<std::size_t>(segments) * 12);
+  const auto at = [&](int i, float radius) {
+    const double angle = 2.0 * std::numbers::pi * i / segments;
+    return QPointF(radius * std::cos(angle) / halfWidth, radius * std::sin(angle) / halfHeight);
+  };
+  for (int i = 0; i < segments; ++i) {
+    const QPointF a = at(i, field.radius), b = at(i + 1, field.radius), c = at(i, outer), d = at(i + 1, outer);
+    for (const QPointF& p : {a, c, d, a, d, b}) {
+      out.push_back(static_cast<float>(p.x()));
+      out.push_back(static_cast<float>(p.y()));
+    }
+  }
+  return out;
+}
+
 float maxBlurPixels(int height) { return std::max(1.5f, kMaxBlurFraction * static_cast<float>(height)); }
 
 EyepiecePass::EyepiecePass() = default;
@@ -40,7 +63,10 @@ bool EyepiecePass::create(bool softwareRenderer, QString* error) {
   program_ = shaderProgram(QStringLiteral(":/microsim/shaders/eyepiece.vert"),
                            QStringLiteral(":/microsim/shaders/eyepiece.frag"),
                            softwareRenderer ? QByteArray("#define TAP_STEP 2\n") : QByteArray(), error);
-  if (!program_ || !empty_.create()) {
+  if (program_)
+    mask_ = shaderProgram(QStringLiteral(":/microsim/shaders/field_mask.vert"),
+                          QStringLiteral(":/microsim/shaders/field_mask.frag"), {}, error);
+  if (!program_ || !mask_ || !empty_.create() || !maskArray_.create() || !maskVertices_.create()) {
     destroy();
     return false;
   }
@@ -49,9 +75,24 @@ bool EyepiecePass::create(bool softwareRenderer, QString* error) {
 
 void EyepiecePass::destroy() {
   program_.reset();
+  mask_.reset();
+  maskVertices_.destroy();
+  maskArray_.destroy();
   multisampled_.reset();
   picture_.reset();
   empty_.destroy();
+}
+
+void EyepiecePass::maskOutsideField(QOpenGLExtraFunctions& gl, const QRect& area) {
+  const std::vector<float> triangles = fieldMaskTriangles(area);
+  QOpenGLVertexArrayObject::Binder bind(&maskArray_);
+  maskVertices_.bind();
+  maskVertices_.allocate(triangles.data(), static_cast<int>(triangles.size() * sizeof(float)));
+  gl.glEnableVertexAttribArray(0);
+  gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  mask_->bind();
+  gl.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size() / 2));
+  mask_->release();
 }
 
 bool EyepiecePass::begin(QOpenGLExtraFunctions& gl, const QSize& size, int samples) {

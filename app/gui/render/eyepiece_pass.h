@@ -3,7 +3,9 @@
 //   - The circular field of view (eyepieceField): black outside a circle as wide as the eye's
 //     area's smaller side, a soft edge and a slight fall-off toward it. The lit pass applies it
 //     per fragment (resources/shaders/shaded.frag: free, where a full-screen pass of its own
-//     costs a software rasteriser a third of its frame rate).
+//     would cost a software rasteriser a good part of its frame rate), after maskOutsideField has put a
+//     ring of triangles on the near plane over everything outside the circle: the scene's
+//     fragments there fail the early depth test and are never shaded (half of a 16:10 picture).
 //   - Depth of field (this pass, only while it is on): the viewport draws each eye's scene into
 //     an offscreen picture (begin), each pixel's out-of-focus amount in its alpha, and this pass
 //     draws it into the widget (finish), pixels off the focal plane blurred by a disc of taps
@@ -18,6 +20,7 @@
 //
 // Units: pixels of the framebuffer (device pixels), GL's origin at the bottom left.
 
+#include <QOpenGLBuffer>
 #include <QOpenGLVertexArrayObject>
 #include <QPointF>
 #include <QRect>
@@ -25,6 +28,7 @@
 #include <QString>
 
 #include <memory>
+#include <vector>
 
 class QOpenGLExtraFunctions;
 class QOpenGLFramebufferObject;
@@ -40,6 +44,10 @@ struct EyepieceField {
 };
 
 EyepieceField eyepieceField(const QRect& area);
+
+/// The ring from the field stop's circle to beyond the corners of `area`, as triangles (two
+/// floats a vertex, normalised device coordinates of the area's viewport), `segments` round.
+std::vector<float> fieldMaskTriangles(const QRect& area, int segments = 64);
 
 /// Pixels of blur for a fully out-of-focus point in an eye's area `height` pixels tall.
 float maxBlurPixels(int height);
@@ -57,6 +65,10 @@ class EyepiecePass {
   void destroy();
   bool isCreated() const { return program_ != nullptr; }
 
+  /// Draws the field stop's mask over `area` (the current viewport) on the near plane, in
+  /// black: depth test and writes on.
+  void maskOutsideField(QOpenGLExtraFunctions& gl, const QRect& area);
+
   /// Binds the offscreen picture, `size` pixels with `samples` (the widget's), for the lit
   /// pass; made or remade when either changes.
   bool begin(QOpenGLExtraFunctions& gl, const QSize& size, int samples);
@@ -66,6 +78,9 @@ class EyepiecePass {
 
  private:
   std::unique_ptr<QOpenGLShaderProgram> program_;
+  std::unique_ptr<QOpenGLShaderProgram> mask_;
+  QOpenGLVertexArrayObject maskArray_;
+  QOpenGLBuffer maskVertices_{QOpenGLBuffer::VertexBuffer};
   std::unique_ptr<QOpenGLFramebufferObject> multisampled_;  // drawn into on a GPU, then resolved
   std::unique_ptr<QOpenGLFramebufferObject> picture_;       // what the pass samples
   int samples_ = 0;                                         // asked of multisampled_

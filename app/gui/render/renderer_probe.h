@@ -24,7 +24,7 @@ bool isSoftwareRenderer(const QString& rendererName);
 int microscopeSamplesFor(const QString& rendererName);
 
 /// Whether the viewport blurs what lies off the focal plane unless the user said otherwise:
-/// on a GPU; not on a software one, where the blur pass costs about a third of the frame rate
+/// on a GPU; not on a software one, where the blur pass costs about a quarter of the frame rate
 /// at 1280×800 (README, Viewport speed; the View menu still turns it on).
 bool depthOfFieldByDefault(const QString& rendererName);
 
