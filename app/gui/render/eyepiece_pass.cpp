@@ -89,7 +89,7 @@ void EyepiecePass::maskOutsideField(QOpenGLExtraFunctions& gl, const QRect& area
   maskVertices_.bind();
   maskVertices_.allocate(triangles.data(), static_cast<int>(triangles.size() * sizeof(float)));
   gl.glEnableVertexAttribArray(0);
-  gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  gl.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(2 * sizeof(float)), nullptr);
   mask_->bind();
   gl.glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangles.size() / 2));
   mask_->release();
