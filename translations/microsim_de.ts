@@ -1691,6 +1691,10 @@
         <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
         <translation>Ihre Punktzahlen über Ihre Versuche, die Rückmeldung zu jedem Versuch und die Notizen Ihrer Ausbilder</translation>
     </message>
+    <message>
+        <source>The history could not be read: %1</source>
+        <translation>Der Verlauf konnte nicht gelesen werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LessonStatusText</name>
@@ -1879,6 +1883,14 @@
     <message>
         <source>Instructor %1 added.</source>
         <translation>Ausbilder(in) %1 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>&amp;Depth of field</source>
+        <translation>&amp;Schärfentiefe</translation>
+    </message>
+    <message>
+        <source>Blur what lies above or below the focal plane, as a microscope does</source>
+        <translation>Was über oder unter der Schärfeebene liegt, unscharf zeigen, wie ein Mikroskop es tut</translation>
     </message>
 </context>
 <context>

@@ -1691,6 +1691,10 @@
         <source>Your scores over your attempts, each attempt's feedback and your instructors' notes</source>
         <translation>Sus puntuaciones a lo largo de sus intentos, la retroalimentación de cada intento y las notas de sus instructores</translation>
     </message>
+    <message>
+        <source>The history could not be read: %1</source>
+        <translation>No se pudo leer el historial: %1</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LessonStatusText</name>
@@ -1879,6 +1883,14 @@
     <message>
         <source>Instructor %1 added.</source>
         <translation>Instructor %1 añadido.</translation>
+    </message>
+    <message>
+        <source>&amp;Depth of field</source>
+        <translation>&amp;Profundidad de campo</translation>
+    </message>
+    <message>
+        <source>Blur what lies above or below the focal plane, as a microscope does</source>
+        <translation>Desenfocar lo que queda por encima o por debajo del plano focal, como hace un microscopio</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include "gui/pages/my_progress_page.h"
 #include "gui/pages/results_page.h"
 #include "gui/pages/sign_in_page.h"
+#include "gui/render/renderer_probe.h"
 #include "gui/review/review_page.h"
 #include "gui/settings/settings_dialog.h"
 #include "gui/settings/tunables.h"
@@ -40,10 +41,12 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   // the pages
   pages_ = new QStackedWidget(this);
   signIn_ = new SignInPage(history_, pages_);
-  lessonList_ = new LessonListPage(history_, pages_);
+  // the pages that only read the history read it off the GUI thread, from its location
+  const QString historyLocation = history_ && history_->isOpen() ? history_->location() : QString();
+  lessonList_ = new LessonListPage(historyLocation, pages_);
   attempt_ = new AttemptPage(history_, pages_);
   results_ = new ResultsPage(pages_);
-  progress_ = new MyProgressPage(history_ && history_->isOpen() ? history_->location() : QString(), pages_);
+  progress_ = new MyProgressPage(historyLocation, pages_);
   for (QWidget* page : std::initializer_list<QWidget*>{signIn_, lessonList_, attempt_, results_, progress_})
     pages_->addWidget(page);
   // a page that needs more room than the screen has scrolls instead of growing the window
@@ -205,6 +208,17 @@ void MainWindow::buildMenus() {
   QAction* keys = view->addAction(tr("&Keys and mouse"), this, [this] { viewport()->setHelpVisible(!viewport()->helpVisible()); });
   keys->setShortcut(QKeySequence(Qt::Key_F1));
   keys->setObjectName(QStringLiteral("keyMapAction"));
+  // the microscope's shallow depth of field (render/eyepiece_pass.h), kept between sessions
+  QAction* focus = view->addAction(tr("&Depth of field"));
+  focus->setObjectName(QStringLiteral("depthOfFieldAction"));
+  focus->setCheckable(true);
+  focus->setToolTip(tr("Blur what lies above or below the focal plane, as a microscope does"));
+  focus->setChecked(QSettings().value(settings::depthOfField(), depthOfFieldByDefault(openGlRendererName())).toBool());
+  viewport()->setDepthOfField(focus->isChecked());
+  connect(focus, &QAction::toggled, this, [this](bool on) {
+    viewport()->setDepthOfField(on);
+    QSettings().setValue(settings::depthOfField(), on);
+  });
 
   // instructors add people here (trainees also create themselves at sign-in)
   peopleMenu_ = menuBar()->addMenu(tr("&People"));

@@ -22,6 +22,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <tuple>
+
 namespace microsim::gui {
 
 namespace {
@@ -82,6 +84,7 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   list->setCurrentRow(0);
   window.signInPage()->findChild<QPushButton*>(QStringLiteral("signInButton"))->click();
   window.lessonListPage()->selectRow(1);
+  if (!window.lessonListPage()->statusesLoaded()) waitFor(window.lessonListPage(), &LessonListPage::statusesShown);
   if (!saveScreenShot(window, out.filePath(QStringLiteral("lessons.png")), written, inspect)) return fail(QStringLiteral("lessons"));
 
   // lesson 2 in Learn mode, the shipped stitch replayed up to the first pierce
@@ -97,6 +100,21 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   window.viewport()->update();
   if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
   if (!saveScreenShot(window, out.filePath(QStringLiteral("attempt-learn.png")), written, inspect)) return fail(QStringLiteral("attempt"));
+
+  // the microscope's picture alone, with its depth of field (a GPU's default): from straight
+  // above, and from the oblique view turned 40° about the table so the cut ends face the eye
+  // and the lumen shows
+  const bool focus = window.viewport()->depthOfField();
+  window.viewport()->setDepthOfField(true);
+  for (const auto& [view, yaw, name] : {std::tuple{NamedView::Top, 0.0f, QStringLiteral("microscope-top.png")},
+                                        std::tuple{NamedView::Oblique, 40.0f, QStringLiteral("microscope-oblique.png")}}) {
+    window.viewport()->showView(view);
+    window.viewport()->camera().orbit(yaw, 0.0f);
+    window.viewport()->cameraChanged();
+    if (!saveScreenShot(*window.viewport(), out.filePath(name), written, inspect)) return fail(name);
+  }
+  window.viewport()->showView(NamedView::Microscope);
+  window.viewport()->setDepthOfField(focus);
 
   // the whole stitch, scored
   attempt->replay(stitch.frames, true);

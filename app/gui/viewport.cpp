@@ -2,6 +2,8 @@
 
 #include "gui/render/background_plane.h"
 #include "gui/render/marker_meshes.h"
+#include "gui/render/renderer_probe.h"
+#include "gui/render/shader_program.h"
 #include "gui/render/side_view.h"
 #include "gui/render/tool_meshes.h"
 #include "gui/render/tube_builder.h"
@@ -125,6 +127,11 @@ void Viewport::setSideViewVisible(bool visible) {
   update();
 }
 
+void Viewport::setDepthOfField(bool on) {
+  depthOfField_ = on;
+  update();
+}
+
 void Viewport::cameraChanged() {
   if (manual_) {
     const auto e = [](const QVector3D& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); };
@@ -141,18 +148,14 @@ void Viewport::loadStaticGeometry() {
     mesh(m) = {};
     meshChanged(m);
   }
-  tissueColours_.clear();
+  tissue_ = {};
   snapshot_.reset();  // the next frame takes the runner's latest onto the new meshes
   if (!runner_ || !runner_->sceneDef()) return;
   const sim::SceneDef& def = *runner_->sceneDef();
 
-  // the tissue's triangles and colours; its positions come with each snapshot
-  const auto& triangles = runner_->tissueTriangles();
-  ShadedMesh& tissue = mesh(DrawMesh::Tissue);
-  tissue.indices.reserve(triangles.size() * 3);
-  for (const auto& t : triangles)
-    for (int i : t) tissue.indices.push_back(static_cast<std::uint32_t>(i));
-  tissueColours_ = tissueVertexColours(def);
+  // the tissue's triangles, colours and surface points; its positions come with each snapshot
+  tissue_ = tissueSurface(def, runner_->tissueTriangles());
+  mesh(DrawMesh::Tissue).indices = tissue_.indices;
 
   // the tools' meshes in their own frames
   for (int h = 0; h < sim::kHandCount; ++h)
@@ -175,15 +178,7 @@ void Viewport::updateDynamicGeometry() {
   snapshot_ = std::move(latest);
   const sim::RenderSnapshot& s = *snapshot_;
 
-  ShadedMesh& tissue = mesh(DrawMesh::Tissue);
-  const std::size_t nodes = s.tissuePositions.size() / 3;
-  tissue.vertices.resize(nodes);
-  for (std::size_t i = 0; i < nodes; ++i) {
-    for (int r = 0; r < 3; ++r) {
-      tissue.vertices[i].position[r] = s.tissuePositions[3 * i + static_cast<std::size_t>(r)];
-      tissue.vertices[i].normal[r] = s.tissueNormals[3 * i + static_cast<std::size_t>(r)];
-    }
-  }
+  placeTissue(tissue_, s, mesh(DrawMesh::Tissue));
   tissueMoved_ = true;
 
   ShadedMesh& needle = mesh(DrawMesh::Needle);
@@ -196,7 +191,8 @@ void Viewport::updateDynamicGeometry() {
   if (sutureNodes > 1) {
     // never thinner than about a pixel, or the thread flickers in and out
     const float pixel = camera_.mmPerPixel(std::max(1, height()));
-    const TubeStyle needleStyle{std::max({2.5f * s.sutureRadius, 0.03f, 1.5f * pixel}), 8, 2};
+    // the needle round and smooth enough to keep its curve seen edge-on
+    const TubeStyle needleStyle{std::max({2.5f * s.sutureRadius, 0.03f, 1.5f * pixel}), 10, 4};
     const TubeStyle threadStyle{std::max(s.sutureRadius, 0.8f * pixel), 6, 2};
     const int lastNeedle = std::clamp(s.needleNodes - 1, 0, sutureNodes - 1);
     appendTube(s.suturePositions, 0, lastNeedle, s.sutureAlive, needleStyle, needle);
@@ -212,7 +208,10 @@ void Viewport::uploadMeshes() {
     const auto k = static_cast<std::size_t>(i);
     if (meshDirty_[k]) {
       gpu(m).upload(*this, mesh(m), true);
-      if (m == DrawMesh::Tissue) gpu(m).setColours(*this, tissueColours_);
+      if (m == DrawMesh::Tissue) {
+        gpu(m).setColours(*this, tissue_.colours);
+        gpu(m).setSurface(*this, tissue_.surface);
+      }
     }
     meshDirty_[k] = false;
   }
@@ -236,24 +235,29 @@ void Viewport::initializeGL() {
 }
 
 bool Viewport::buildPrograms() {
-  shaded_ = std::make_unique<QOpenGLShaderProgram>();
-  const bool ok =
-      shaded_->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/microsim/shaders/shaded.vert")) &&
-      shaded_->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/microsim/shaders/shaded.frag")) &&
-      shaded_->link();
-  if (!ok) {
-    lastError_ = shaded_->log();
+  // one source, two variants: the tissue's wall shading compiled in only where it is drawn
+  const QString vertex = QStringLiteral(":/microsim/shaders/shaded.vert");
+  const QString fragment = QStringLiteral(":/microsim/shaders/shaded.frag");
+  shaded_ = shaderProgram(vertex, fragment, {}, &lastError_);
+  if (shaded_) tissueShaded_ = shaderProgram(vertex, fragment, "#define TISSUE_WALL\n", &lastError_);
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = isSoftwareRenderer(QString::fromLatin1(renderer ? renderer : ""));
+  if (!shaded_ || !tissueShaded_ || !eyepiece_.create(software, &lastError_)) {
     qWarning("viewport: shader program failed: %s", qPrintable(lastError_));
     shaded_.reset();
+    tissueShaded_.reset();
+    return false;
   }
-  return ok;
+  return true;
 }
 
 void Viewport::releaseGL() {
   if (!shaded_) return;
   makeCurrent();
   for (GpuMesh& m : gpu_) m.destroy();
+  eyepiece_.destroy();
   shaded_.reset();
+  tissueShaded_.reset();
   doneCurrent();
 }
 
@@ -265,18 +269,26 @@ QRect Viewport::pixelRect(const QRect& logical) const {
           qRound(logical.height() * r)};
 }
 
-void Viewport::setShading(const Material& material) {
+void Viewport::setShading(QOpenGLShaderProgram& program, const Material& material) {
   glVertexAttrib3f(2, material.colour.x(), material.colour.y(), material.colour.z());
-  shaded_->setUniformValue("specularStrength", material.specular);
-  shaded_->setUniformValue("shininess", material.shininess);
+  program.setUniformValue("specularStrength", material.specular);
+  program.setUniformValue("shininess", material.shininess);
 }
 
-void Viewport::setDepthCues(float focus, float depthOfField, float fogStart, float fogEnd) {
-  shaded_->setUniformValue("focusDepth", focus);
-  shaded_->setUniformValue("depthOfField", depthOfField);
-  shaded_->setUniformValue("fogStart", fogStart);
-  shaded_->setUniformValue("fogEnd", fogEnd);
-  shaded_->setUniformValue("fogColour", kBackground);
+void Viewport::setDepthCues(float focus, float sharpBand, float fogStart, float fogEnd, bool focusInAlpha,
+                            const QRect& fieldArea) {
+  const EyepieceField field = fieldArea.isEmpty() ? EyepieceField{} : eyepieceField(fieldArea);
+  const QVector4D stop(static_cast<float>(field.centre.x()), static_cast<float>(field.centre.y()), field.radius, field.edge);
+  for (QOpenGLShaderProgram* program : {shaded_.get(), tissueShaded_.get()}) {
+    program->bind();
+    program->setUniformValue("fieldStop", stop);
+    program->setUniformValue("focusDepth", focus);
+    program->setUniformValue("depthOfField", sharpBand);
+    program->setUniformValue("fogStart", fogStart);
+    program->setUniformValue("fogEnd", fogEnd);
+    program->setUniformValue("fogColour", kBackground);
+    program->setUniformValue("focusInAlpha", focusInAlpha);
+  }
 }
 
 void Viewport::paintGL() {
@@ -332,19 +344,23 @@ void Viewport::paintGL() {
 void Viewport::drawEye(Eye eye, const QRect& area, const DrawList& list) {
   const QRect px = pixelRect(area);
   // GL's origin is bottom-left; areas here are full-height, so only x matters
-  glViewport(px.x(), 0, px.width(), px.height());
+  const QRect glArea(px.x(), 0, px.width(), px.height());
+  // with depth of field the eye's picture is drawn offscreen, then blurred into the widget
+  const bool blur = depthOfField_ && eyepiece_.begin(*this, pixelRect(rect()).size(), std::max(0, format().samples()));
+  glViewport(glArea.x(), glArea.y(), glArea.width(), glArea.height());
   glEnable(GL_SCISSOR_TEST);
-  glScissor(px.x(), 0, px.width(), px.height());
-  const float bg = 1.0f / 2.2f;
-  glClearColor(std::pow(kBackground.x(), bg), std::pow(kBackground.y(), bg), std::pow(kBackground.z(), bg), 1.0f);
+  glScissor(glArea.x(), glArea.y(), glArea.width(), glArea.height());
+  // black where nothing is drawn, as outside the field stop; for the blur, alpha 0: in focus
+  glClearColor(0.0f, 0.0f, 0.0f, blur ? 0.0f : 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  eyepiece_.maskOutsideField(*this, glArea);
   const float aspect = static_cast<float>(area.width()) / static_cast<float>(std::max(1, area.height()));
-  shaded_->bind();
   const float focus = camera_.focusDistance();
   setDepthCues(focus, std::max(0.3f, 0.025f * camera_.distance()), focus + 0.5f,
-               focus + 0.15f * camera_.distance() + 4.0f);
+               focus + 0.15f * camera_.distance() + 4.0f, blur, glArea);
   drawScene(list, camera_.view(eye), camera_.projection(aspect, eye), true);
   shaded_->release();
+  if (blur) eyepiece_.finish(*this, defaultFramebufferObject(), glArea, maxBlurPixels(glArea.height()));
   glDisable(GL_SCISSOR_TEST);
 }
 
@@ -361,18 +377,21 @@ void Viewport::drawSideView(const DrawList& list) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const MicroscopeCamera side = sideViewCamera(camera_);
   const float aspect = static_cast<float>(area.width()) / static_cast<float>(std::max(1, area.height()));
-  shaded_->bind();
   // everything sharp and unfogged: the inset measures height, it is no microscope
-  setDepthCues(side.distance(), side.farPlane(), side.farPlane(), 2.0f * side.farPlane());
+  setDepthCues(side.distance(), side.farPlane(), side.farPlane(), 2.0f * side.farPlane(), false, {});
   drawScene(list, side.view(), side.projection(aspect), false);
   shaded_->release();
   glDisable(GL_SCISSOR_TEST);
 }
 
 void Viewport::drawScene(const DrawList& list, const QMatrix4x4& view, const QMatrix4x4& projection, bool shadows) {
-  shaded_->setUniformValue("view", view);
-  shaded_->setUniformValue("projection", projection);
-  shaded_->setUniformValue("flatMode", false);
+  for (QOpenGLShaderProgram* program : {shaded_.get(), tissueShaded_.get()}) {
+    program->bind();
+    program->setUniformValue("view", view);
+    program->setUniformValue("projection", projection);
+    program->setUniformValue("flatMode", false);
+  }
+  QOpenGLShaderProgram* bound = tissueShaded_.get();
   bool marks = false;
   for (const DrawItem& item : list) {
     // marks go over the scene: a fresh depth buffer (the eye's scissor holds), so they
@@ -381,15 +400,23 @@ void Viewport::drawScene(const DrawList& list, const QMatrix4x4& view, const QMa
       glClear(GL_DEPTH_BUFFER_BIT);
       marks = true;
     }
-    setShading(item.material);
-    shaded_->setUniformValue("model", item.model);
-    shaded_->setUniformValue("normalMatrix", (view * item.model).normalMatrix());
+    QOpenGLShaderProgram* program = item.kind == DrawKind::Tissue ? tissueShaded_.get() : shaded_.get();
+    if (program != bound) program->bind();
+    bound = program;
+    setShading(*program, item.material);
+    program->setUniformValue("sharp", item.onTop);
+    program->setUniformValue("model", item.model);
+    program->setUniformValue("normalMatrix", (view * item.model).normalMatrix());
     gpu(item.mesh).draw(*this);
-    if (shadows && item.kind == DrawKind::Background) drawShadows(list, view);
+    if (shadows && item.kind == DrawKind::Background) {
+      drawShadows(list, view);
+      bound = shaded_.get();
+    }
   }
 }
 
 void Viewport::drawShadows(const DrawList& list, const QMatrix4x4& view) {
+  shaded_->bind();
   shaded_->setUniformValue("flatMode", true);
   shaded_->setUniformValue("flatColour", kShadowColour);
   glEnable(GL_POLYGON_OFFSET_FILL);

@@ -6,9 +6,12 @@
 // forceps jaws from the scene's jaw mesh, the scalpel or the scissors in a hand that holds
 // them, and depth cues:
 // a background plane under the scene with the scene's projected shadow, darkening with depth
-// past the focal plane and a loss of contrast off it (the microscope's shallow depth of
-// field), and a side view in the top-right corner (render/side_view.h) that shows a tool's
-// height above the tissue. Each forceps' tip is marked where its jaws meet, in the colour of
+// past the focal plane and a loss of contrast off it, and a side view in the top-right corner
+// (render/side_view.h) that shows a tool's height above the tissue. The tissue is shaded as
+// wall (render/tissue_surface.h: texture, lumen, cut face), and each eye's picture goes
+// through the eyepiece (render/eyepiece_pass.h): blurred off the focal plane (the
+// microscope's shallow depth of field, which can be turned off) and seen through a circular
+// field stop; the side view is drawn after it, sharp and unmasked. Each forceps' tip is marked where its jaws meet, in the colour of
 // what they would close on now, with a ring around it (render/draw_list.h). Learn-mode
 // guides are drawn over it; F1 shows the key map; a line at the bottom names what each hand
 // holds (as the latest snapshot has it) and which hand is active.
@@ -32,9 +35,11 @@
 
 #include "gui/render/camera.h"
 #include "gui/render/draw_list.h"
+#include "gui/render/eyepiece_pass.h"
 #include "gui/render/gpu_mesh.h"
 #include "gui/render/guide.h"
 #include "gui/render/stereo_mode.h"
+#include "gui/render/tissue_surface.h"
 #include "gui/shaded_mesh.h"
 
 #include "microsim/sim/scene/render_snapshot.h"
@@ -89,6 +94,9 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   /// where it would cover one eye's picture).
   void setSideViewVisible(bool visible);
   bool sideViewVisible() const { return sideViewVisible_; }
+  /// Blurs what lies off the focal plane (on by default); off, every depth is sharp.
+  void setDepthOfField(bool on);
+  bool depthOfField() const { return depthOfField_; }
 
   /// Shows a named view of the scene (the scene's camera is home).
   void showView(NamedView view);
@@ -137,8 +145,12 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   void drawScene(const DrawList& list, const QMatrix4x4& view, const QMatrix4x4& projection, bool shadows);
   void drawShadows(const DrawList& list, const QMatrix4x4& view);
   void drawOverlay();
-  void setDepthCues(float focus, float depthOfField, float fogStart, float fogEnd);
-  void setShading(const Material& material);
+  // the focal plane, its sharp band and the fog (mm from the eye) in both programs; with
+  // `focusInAlpha` each pixel's alpha says how far out of focus it is, and the field stop is
+  // that of `fieldArea` (GL pixels; empty: none) (eyepiece_pass.h)
+  void setDepthCues(float focus, float sharpBand, float fogStart, float fogEnd, bool focusInAlpha,
+                    const QRect& fieldArea);
+  void setShading(QOpenGLShaderProgram& program, const Material& material);
   void refreshHeldNeedle();
   QRect pixelRect(const QRect& logical) const;
   ShadedMesh& mesh(DrawMesh m) { return meshes_[static_cast<std::size_t>(m)]; }
@@ -149,12 +161,14 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   // the meshes the draw list names (CPU side), and which changed since the last upload
   std::array<ShadedMesh, kDrawMeshCount> meshes_;
   std::array<bool, kDrawMeshCount> meshDirty_{};
-  std::vector<float> tissueColours_;  // outer wall and lumen, per tissue vertex
+  TissueSurface tissue_;              // the tissue's drawn vertices, colours and surface points
   bool tissueMoved_ = false;          // new positions, same triangles
   QMatrix4x4 shadowMatrix_;
 
   // GPU side
-  std::unique_ptr<QOpenGLShaderProgram> shaded_;
+  std::unique_ptr<QOpenGLShaderProgram> shaded_;        // everything but the tissue
+  std::unique_ptr<QOpenGLShaderProgram> tissueShaded_;  // the tissue: its wall's texture and light
+  EyepiecePass eyepiece_;
   std::array<GpuMesh, kDrawMeshCount> gpu_;
 
   QPointer<SimulationRunner> runner_;
@@ -164,6 +178,7 @@ class Viewport : public QOpenGLWidget, protected QOpenGLExtraFunctions {
   StereoMode stereoMode_ = StereoMode::Mono;
   bool helpVisible_ = false;
   bool sideViewVisible_ = true;
+  bool depthOfField_ = true;
 
   MicroscopeCamera camera_;
   QPoint lastMouse_;

@@ -12,8 +12,8 @@
 
 namespace microsim::gui {
 
-LessonListPage::LessonListPage(assessment::HistoryDatabase* history, QWidget* parent)
-    : QWidget(parent), history_(history) {
+LessonListPage::LessonListPage(const QString& historyLocation, QWidget* parent)
+    : QWidget(parent), reader_(historyLocation.isEmpty() ? nullptr : new HistoryReader(historyLocation, this)) {
   setObjectName(QStringLiteral("lessonListPage"));
   heading_ = new QLabel(this);
   table_ = new QTableWidget(0, 2, this);
@@ -67,28 +67,56 @@ void LessonListPage::show(const std::vector<lesson::Lesson>& lessons, const asse
   lessons_ = lessons;
   language_ = language;
   heading_->setText(tr("<h2>Lessons for %1</h2>").arg(name.toHtmlEscaped()));
-  const bool stored = history_ && history_->isOpen() && viewer.userId != 0;
-  QList<assessment::AttemptSummary> attempts;
-  if (stored) attempts = assessment::AttemptStore(*history_).list(viewer, viewer.userId);
+  const bool stored = reader_ && viewer.userId != 0;
   // a guest's attempts are not stored: there is no progress to show
   progress_->setEnabled(stored);
 
-  statuses_.clear();
   table_->setRowCount(static_cast<int>(lessons_.size()));
+  statuses_.assign(lessons_.size(), LessonStatus::NotStarted);
+  for (std::size_t i = 0; i < lessons_.size(); ++i) {
+    const int row = static_cast<int>(i);
+    table_->setItem(row, 0, new QTableWidgetItem(lessons_[i].title.in(language_)));
+    table_->setItem(row, 1, new QTableWidgetItem(QStringLiteral("…")));
+  }
+  selectRow(previous >= 0 && previous < table_->rowCount() ? previous : 0);
+  statusesLoaded_ = false;
+  if (!stored) {
+    showStatuses({}, viewer.userId, {});
+    return;
+  }
+  using Attempts = QList<assessment::AttemptSummary>;
+  struct Read {
+    Attempts attempts;
+    QString error;
+  };
+  reader_->read<Read>(
+      [viewer](assessment::HistoryDatabase& history) {
+        assessment::AttemptStore store(history);
+        Read read{store.list(viewer, viewer.userId), {}};
+        if (!store.lastError().ok()) read.error = store.lastError().driverMessage;
+        return read;
+      },
+      [](const QString& why) { return Read{{}, why}; },
+      [this, user = viewer.userId](const Read& read) { showStatuses(read.attempts, user, read.error); });
+}
+
+void LessonListPage::showStatuses(const QList<assessment::AttemptSummary>& attempts, qint64 userId,
+                                  const QString& error) {
+  statuses_.clear();
   for (std::size_t i = 0; i < lessons_.size(); ++i) {
     const lesson::Lesson& l = lessons_[i];
     const auto rubric = assessment::loadRubric(l.rubricPath.toStdString());
     const assessment::Rubric* r = std::get_if<assessment::Rubric>(&rubric);
-    const LessonStatus status = lessonStatus(attempts, viewer.userId, l.id, r);
+    const LessonStatus status = lessonStatus(attempts, userId, l.id, r);
     statuses_.push_back(status);
-    const int row = static_cast<int>(i);
-    table_->setItem(row, 0, new QTableWidgetItem(l.title.in(language_)));
-    auto* statusItem = new QTableWidgetItem(LessonStatusText::word(status));
-    if (status == LessonStatus::Passed || status == LessonStatus::Proficient)
+    auto* statusItem = new QTableWidgetItem(error.isEmpty() ? LessonStatusText::word(status) : QStringLiteral("—"));
+    if (!error.isEmpty()) statusItem->setToolTip(tr("The history could not be read: %1").arg(error));
+    if (error.isEmpty() && (status == LessonStatus::Passed || status == LessonStatus::Proficient))
       statusItem->setForeground(QColor(0x1b, 0x7f, 0x3a));
-    table_->setItem(row, 1, statusItem);
+    table_->setItem(static_cast<int>(i), 1, statusItem);
   }
-  selectRow(previous >= 0 && previous < table_->rowCount() ? previous : 0);
+  statusesLoaded_ = true;
+  Q_EMIT statusesShown();
 }
 
 QString LessonListPage::statusText(int row) const { return table_->item(row, 1)->text(); }

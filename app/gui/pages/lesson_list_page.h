@@ -2,11 +2,17 @@
 // The lessons for the signed-in person: title, goals, and their status in each (lesson_status.h),
 // with Learn (guided) and Test (graded, no hints) buttons, and "My progress" (their own
 // history, my_progress_page.h) for a person whose attempts are stored.
+//
+// The attempts the statuses come from are read off the GUI thread (history_reader.h); the
+// lessons show at once, their statuses when the read arrives (statusesShown).
 
+#include "gui/pages/history_reader.h"
 #include "gui/pages/lesson_status.h"
 #include "lesson/lesson.h"
 
 #include "microsim/assessment/storage/history_database.h"
+
+#include <QList>
 
 #include <QWidget>
 
@@ -22,13 +28,16 @@ class LessonListPage : public QWidget {
   Q_OBJECT
 
  public:
-  LessonListPage(assessment::HistoryDatabase* history, QWidget* parent = nullptr);
+  /// `historyLocation`: the history to read (HistoryDatabase::location()); empty: none.
+  explicit LessonListPage(const QString& historyLocation, QWidget* parent = nullptr);
 
-  /// Shows `lessons` for `viewer`, in `language`.
+  /// Shows `lessons` for `viewer`, in `language`; their statuses follow.
   void show(const std::vector<lesson::Lesson>& lessons, const assessment::Viewer& viewer,
             const QString& name, const QString& language);
-  /// The status shown in row `row` (for tests).
+  /// The status shown in row `row` (for tests); NotStarted until statusesLoaded().
   LessonStatus status(int row) const { return statuses_.at(static_cast<std::size_t>(row)); }
+  /// True once the statuses of the last show() are on screen.
+  bool statusesLoaded() const { return statusesLoaded_; }
   /// The word shown in row `row`'s status column.
   QString statusText(int row) const;
   int selectedRow() const;
@@ -39,12 +48,17 @@ class LessonListPage : public QWidget {
   void signOut();
   /// "My progress", opened on `lessonId` (the selected lesson; empty: none selected).
   void showProgress(const QString& lessonId);
+  /// The statuses of the last show() are on screen.
+  void statusesShown();
 
  private:
   void showGoals();
   void start(assessment::AttemptMode mode);
+  // the statuses from `attempts` (a failed read: `error`, and no statuses)
+  void showStatuses(const QList<assessment::AttemptSummary>& attempts, qint64 userId, const QString& error);
 
-  assessment::HistoryDatabase* history_;
+  HistoryReader* reader_ = nullptr;  // null: no history
+  bool statusesLoaded_ = false;
   std::vector<lesson::Lesson> lessons_;
   std::vector<LessonStatus> statuses_;
   QString language_;

@@ -5,10 +5,6 @@
 #include "microsim/assessment/storage/attempt_detail.h"
 #include "microsim/assessment/storage/attempt_store.h"
 
-#include <QThread>
-
-#include <algorithm>
-#include <memory>
 #include <utility>
 
 namespace microsim::gui {
@@ -37,38 +33,17 @@ TraineeProgress readTraineeProgress(assessment::HistoryDatabase& history, const 
 }
 
 TraineeProgressLoader::TraineeProgressLoader(QString historyLocation, QObject* parent)
-    : QObject(parent), location_(std::move(historyLocation)) {
+    : QObject(parent), reader_(std::move(historyLocation)) {
   qRegisterMetaType<TraineeProgress>();
 }
 
-TraineeProgressLoader::~TraineeProgressLoader() {
-  for (QThread* thread : running_) {
-    thread->wait();
-    delete thread;
-  }
-}
-
 void TraineeProgressLoader::load(const assessment::Viewer& viewer, const QString& lesson) {
-  const quint64 request = ++latest_;
-  auto result = std::make_shared<TraineeProgress>();
-  // the connection is opened, used and closed on the loading thread
-  QThread* thread = QThread::create([location = location_, viewer, lesson, result] {
-    assessment::HistoryDatabase history;
-    const assessment::DatabaseStatus opened = history.open(location);
-    if (!opened.ok()) {
-      *result = TraineeProgress{lesson, {}, {}, {assessment::HistoryError::NotOpen, opened.driverMessage}};
-      return;
-    }
-    *result = readTraineeProgress(history, viewer, lesson);
-  });
-  thread->setObjectName(QStringLiteral("trainee progress"));
-  running_.push_back(thread);
-  connect(thread, &QThread::finished, this, [this, thread, request, result] {
-    running_.erase(std::remove(running_.begin(), running_.end(), thread), running_.end());
-    thread->deleteLater();
-    if (request == latest_) Q_EMIT loaded(*result);
-  });
-  thread->start();
+  reader_.read<TraineeProgress>(
+      [viewer, lesson](assessment::HistoryDatabase& history) { return readTraineeProgress(history, viewer, lesson); },
+      [lesson](const QString& why) {
+        return TraineeProgress{lesson, {}, {}, {assessment::HistoryError::NotOpen, why}};
+      },
+      [this](const TraineeProgress& progress) { Q_EMIT loaded(progress); });
 }
 
 }  // namespace microsim::gui

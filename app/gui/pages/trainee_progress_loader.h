@@ -1,12 +1,13 @@
 #pragma once
 // Reads a trainee's own history in one lesson off the GUI thread, for "My progress".
 //
-// Each load runs on a thread of its own with a history connection of its own, opened, used
-// and closed there (a QtSql connection belongs to the thread that opened it): the GUI thread
-// makes no history call for it. The result comes back as a plain value through the queued
-// `loaded` signal; when loads overlap (the lesson changed before the last one arrived) only
-// the newest is delivered. The storage layer applies the viewer's rights, so a trainee's load
-// holds nothing but their own attempts and the notes on them.
+// Each load runs through a HistoryReader (history_reader.h: a thread and a history connection
+// of its own); the result comes back as a plain value through the `loaded` signal, and when
+// loads overlap (the lesson changed before the last one arrived) only the newest is
+// delivered. The storage layer applies the viewer's rights, so a trainee's load holds nothing
+// but their own attempts and the notes on them.
+
+#include "gui/pages/history_reader.h"
 
 #include "microsim/assessment/storage/history_database.h"
 
@@ -15,9 +16,6 @@
 #include <QObject>
 #include <QString>
 
-#include <vector>
-
-class QThread;
 
 namespace microsim::gui {
 
@@ -39,8 +37,6 @@ class TraineeProgressLoader : public QObject {
  public:
   /// `historyLocation`: what HistoryDatabase::open takes (an SQLite file or a PostgreSQL URL).
   explicit TraineeProgressLoader(QString historyLocation, QObject* parent = nullptr);
-  /// Waits for the loads still running (they only read).
-  ~TraineeProgressLoader() override;
   TraineeProgressLoader(const TraineeProgressLoader&) = delete;
   TraineeProgressLoader& operator=(const TraineeProgressLoader&) = delete;
 
@@ -51,9 +47,7 @@ class TraineeProgressLoader : public QObject {
   void loaded(const microsim::gui::TraineeProgress& progress);
 
  private:
-  QString location_;
-  quint64 latest_ = 0;
-  std::vector<QThread*> running_;
+  HistoryReader reader_;  // waits for the loads still running when it goes
 };
 
 }  // namespace microsim::gui

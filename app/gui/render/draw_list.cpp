@@ -14,7 +14,8 @@ const Material kVesselMaterial{kVesselOuter, 0.35f, 48.0f};
 const Material kJawMaterial{{0.18f, 0.19f, 0.21f}, 0.06f, 10.0f};
 const Material kBladeMaterial{{0.72f, 0.74f, 0.78f}, 0.9f, 96.0f};
 const Material kNeedleMaterial{{0.80f, 0.80f, 0.84f}, 0.9f, 80.0f};
-const Material kThreadMaterial{{0.12f, 0.16f, 0.85f}, 0.25f, 24.0f};
+// a deep saturated blue: darker than the drape and the wall, so the thread reads against both
+const Material kThreadMaterial{{0.02f, 0.05f, 0.60f}, 0.35f, 40.0f};
 const QVector3D kGuideColour(0.15f, 0.95f, 0.35f);
 const QVector3D kGuideDoneColour(0.45f, 0.50f, 0.47f);
 

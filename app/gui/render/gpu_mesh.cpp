@@ -17,10 +17,10 @@ const void* bufferOffset(std::size_t bytes) {
 
 bool GpuMesh::create() {
   if (vao_.isCreated()) return true;
-  if (!vao_.create() || !vertices_.create() || !colours_.create() || !indices_.create()) return false;
+  if (!vao_.create() || !vertices_.create() || !colours_.create() || !surface_.create() ||
+      !indices_.create()) return false;
   vertices_.setUsagePattern(QOpenGLBuffer::StreamDraw);
   haveIndices_ = false;
-  haveColours_ = false;
   indexCount_ = 0;
   return true;
 }
@@ -29,9 +29,9 @@ void GpuMesh::destroy() {
   vao_.destroy();
   vertices_.destroy();
   colours_.destroy();
+  surface_.destroy();
   indices_.destroy();
   haveIndices_ = false;
-  haveColours_ = false;
   indexCount_ = 0;
 }
 
@@ -55,18 +55,22 @@ void GpuMesh::upload(QOpenGLExtraFunctions& gl, const ShadedMesh& mesh, bool ind
   }
 }
 
-void GpuMesh::setColours(QOpenGLExtraFunctions& gl, const std::vector<float>& rgb) {
+void GpuMesh::setColours(QOpenGLExtraFunctions& gl, const std::vector<float>& rgb) { attach(gl, colours_, 2, 3, rgb); }
+
+void GpuMesh::setSurface(QOpenGLExtraFunctions& gl, const std::vector<float>& xyzw) { attach(gl, surface_, 3, 4, xyzw); }
+
+void GpuMesh::attach(QOpenGLExtraFunctions& gl, QOpenGLBuffer& buffer, int location, int components,
+                     const std::vector<float>& values) {
   QOpenGLVertexArrayObject::Binder bind(&vao_);
-  if (rgb.empty()) {
-    gl.glDisableVertexAttribArray(2);
-    haveColours_ = false;
+  const auto index = static_cast<GLuint>(location);
+  if (values.empty()) {
+    gl.glDisableVertexAttribArray(index);
     return;
   }
-  colours_.bind();
-  colours_.allocate(rgb.data(), static_cast<int>(rgb.size() * sizeof(float)));
-  gl.glEnableVertexAttribArray(2);
-  gl.glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  haveColours_ = true;
+  buffer.bind();
+  buffer.allocate(values.data(), static_cast<int>(values.size() * sizeof(float)));
+  gl.glEnableVertexAttribArray(index);
+  gl.glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, components * static_cast<GLsizei>(sizeof(float)), nullptr);
 }
 
 void GpuMesh::draw(QOpenGLExtraFunctions& gl) {

@@ -8,7 +8,9 @@
 
 namespace microsim::gui {
 
-QString openGlRendererName() {
+namespace {
+
+QString askOpenGlRendererName() {
   QOffscreenSurface surface;
   surface.create();
   QOpenGLContext context;
@@ -17,6 +19,13 @@ QString openGlRendererName() {
   QString renderer = name ? QString::fromLatin1(name) : QString();
   context.doneCurrent();
   return renderer;
+}
+
+}  // namespace
+
+QString openGlRendererName() {
+  static const QString name = askOpenGlRendererName();
+  return name;
 }
 
 bool isSoftwareRenderer(const QString& rendererName) {
@@ -31,5 +40,7 @@ bool isSoftwareRenderer(const QString& rendererName) {
 int microscopeSamplesFor(const QString& rendererName) {
   return isSoftwareRenderer(rendererName) ? 0 : kMicroscopeSamples;
 }
+
+bool depthOfFieldByDefault(const QString& rendererName) { return !isSoftwareRenderer(rendererName); }
 
 }  // namespace microsim::gui

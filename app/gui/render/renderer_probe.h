@@ -12,7 +12,7 @@
 namespace microsim::gui {
 
 /// The GL_RENDERER string of a context made with the default format on an offscreen surface
-/// (needs a QGuiApplication); empty when no context can be made.
+/// (needs a QGuiApplication; asked once, then remembered); empty when no context can be made.
 QString openGlRendererName();
 
 /// True for renderers that rasterise on the CPU: llvmpipe, softpipe, SwiftShader, Microsoft's
@@ -22,5 +22,10 @@ bool isSoftwareRenderer(const QString& rendererName);
 /// The multisampling the viewport should ask for on this renderer: none on a software one,
 /// else kMicroscopeSamples.
 int microscopeSamplesFor(const QString& rendererName);
+
+/// Whether the viewport blurs what lies off the focal plane unless the user said otherwise:
+/// on a GPU; not on a software one, where the blur pass costs about a quarter of the frame rate
+/// at 1280×800 (README, Viewport speed; the View menu still turns it on).
+bool depthOfFieldByDefault(const QString& rendererName);
 
 }  // namespace microsim::gui

@@ -5,6 +5,7 @@
 #include "gui/pages/lesson_list_page.h"
 #include "gui/pages/new_person_form.h"
 #include "gui/pages/sign_in_page.h"
+#include "support/instructor_history.h"
 
 #include "microsim/assessment/storage/people_store.h"
 
@@ -12,7 +13,6 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
-#include <QTemporaryDir>
 #include <QTest>
 
 #include "app/gui/core_profile.h"
@@ -24,24 +24,17 @@ namespace {
 
 using assessment::Role;
 
-class AddPeople : public ::testing::Test {
+class AddPeople : public testing::InstructorHistoryTest {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(dir_.isValid());
-    history_.setPasswordIterations(1000);
-    ASSERT_TRUE(history_.open(dir_.filePath(QStringLiteral("history.sqlite"))).ok());
-    assessment::PeopleStore people(history_);
-    ASSERT_TRUE(people.addInstructor(QStringLiteral("Dr Grey"), QStringLiteral("correct horse")));
-    ASSERT_TRUE(people.addTrainee(QStringLiteral("Ana"), QStringLiteral("Tuesday")));
+    InstructorHistoryTest::SetUp();
+    ASSERT_TRUE(assessment::PeopleStore(history_).addTrainee(QStringLiteral("Ana"), QStringLiteral("Tuesday")));
   }
-
-  QTemporaryDir dir_;
-  assessment::HistoryDatabase history_;
 };
 
 TEST_F(AddPeople, ThePeopleMenuIsForSignedInInstructors) {
   requestCoreProfile();
-  MainWindow window(&history_, {}, dir_.filePath(QStringLiteral("history.sqlite")));
+  MainWindow window(&history_, {}, historyPath());
   auto* addTrainee = window.findChild<QAction*>(QStringLiteral("addTraineeAction"));
   auto* addInstructor = window.findChild<QAction*>(QStringLiteral("addInstructorAction"));
   ASSERT_TRUE(addTrainee && addInstructor);
@@ -57,8 +50,8 @@ TEST_F(AddPeople, ThePeopleMenuIsForSignedInInstructors) {
   window.findChild<QPushButton*>(QStringLiteral("signOutButton"))->click();
 
   // an instructor signs in: open; signed out: closed again
-  window.findChild<QLineEdit*>(QStringLiteral("instructorName"))->setText(QStringLiteral("Dr Grey"));
-  window.findChild<QLineEdit*>(QStringLiteral("instructorPassword"))->setText(QStringLiteral("correct horse"));
+  window.findChild<QLineEdit*>(QStringLiteral("instructorName"))->setText(testing::kTestInstructor);
+  window.findChild<QLineEdit*>(QStringLiteral("instructorPassword"))->setText(testing::kTestInstructorPassword);
   window.findChild<QPushButton*>(QStringLiteral("instructorSignInButton"))->click();
   ASSERT_NE(window.reviewPage(), nullptr);
   EXPECT_TRUE(addTrainee->isEnabled());

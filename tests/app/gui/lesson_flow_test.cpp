@@ -114,6 +114,7 @@ TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
   app.createTrainee(QStringLiteral("Ada Trainee"));
   ASSERT_EQ(app.window->currentPage(), app.window->lessonListPage());
   ASSERT_GE(app.window->lessons().size(), 2u);
+  QTRY_VERIFY_WITH_TIMEOUT(app.window->lessonListPage()->statusesLoaded(), 20000);
   EXPECT_EQ(app.window->lessonListPage()->status(1), LessonStatus::NotStarted);
 
   app.openLesson(1, "testButton");
@@ -161,6 +162,7 @@ TEST(LessonFlow, TestModeReplayOfTheStitchScoresAsTheCliDoes) {
   // back to the list: the lesson is no longer "not started"
   QTest::mouseClick(app.child<QPushButton>("backButton"), Qt::LeftButton);
   ASSERT_EQ(app.window->currentPage(), app.window->lessonListPage());
+  QTRY_VERIFY_WITH_TIMEOUT(app.window->lessonListPage()->statusesLoaded(), 20000);
   EXPECT_NE(app.window->lessonListPage()->status(1), LessonStatus::NotStarted);
 }
 
@@ -253,6 +255,7 @@ TEST(LessonFlow, AbandonAsksFirstAndIsStoredAsAbandoned) {
   EXPECT_EQ(attempts[0].status, assessment::AttemptStatus::Abandoned);
   EXPECT_FALSE(attempts[0].score.has_value());
   // the lesson counts as practised, not passed
+  QTRY_VERIFY_WITH_TIMEOUT(app.window->lessonListPage()->statusesLoaded(), 20000);
   EXPECT_EQ(app.window->lessonListPage()->status(2), LessonStatus::Practised);
 }
 

@@ -4,13 +4,15 @@
 #include "gui/pages/lesson_status.h"
 #include "gui/review/review_page.h"
 #include "lesson/lesson.h"
+#include "support/history_threads.h"
+#include "support/instructor_history.h"
 #include "support/stored_attempts.h"
 
 #include "microsim/assessment/storage/people_store.h"
 
 #include <QComboBox>
+#include <QSignalSpy>
 #include <QTableWidget>
-#include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
@@ -23,16 +25,12 @@ using assessment::AttemptMode;
 using assessment::Role;
 using assessment::Viewer;
 
-class StatusWords : public ::testing::Test {
+class StatusWords : public testing::InstructorHistoryTest {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(dir_.isValid());
-    history_.setPasswordIterations(1000);
-    ASSERT_TRUE(history_.open(dir_.filePath(QStringLiteral("history.sqlite"))).ok());
-    assessment::PeopleStore people(history_);
-    instructor_ = people.addInstructor(QStringLiteral("Dr Grey"), QStringLiteral("correct horse")).value_or(0);
-    ana_ = people.addTrainee(QStringLiteral("Ana")).value_or(0);
-    ASSERT_TRUE(instructor_ && ana_);
+    InstructorHistoryTest::SetUp();
+    ana_ = assessment::PeopleStore(history_).addTrainee(QStringLiteral("Ana")).value_or(0);
+    ASSERT_NE(ana_, 0);
     lessons_ = lesson::loadLessons(lesson::lessonsDirectory());
     ASSERT_EQ(lessons_.size(), 5u);
   }
@@ -61,10 +59,7 @@ class StatusWords : public ::testing::Test {
     return -1;
   }
 
-  QTemporaryDir dir_;
-  assessment::HistoryDatabase history_;
   std::vector<lesson::Lesson> lessons_;
-  qint64 instructor_ = 0;
   qint64 ana_ = 0;
 };
 
@@ -85,8 +80,20 @@ TEST_F(StatusWords, TheTraineesListAndTheInstructorsGridAgree) {
   const qint64 gaveUp = assessment::AttemptStore(history_).begin(ana_, proficient, AttemptMode::Test).value_or(0);
   ASSERT_TRUE(assessment::AttemptStore(history_).abandon(gaveUp));
 
-  LessonListPage list(&history_);
-  list.show(lessons_, Viewer{ana_, Role::Trainee}, QStringLiteral("Ana"), QStringLiteral("en"));
+  // the list reads the history on a thread of its own, never on the GUI thread: the
+  // statuses follow the lessons
+  LessonListPage list(historyPath());
+  QSignalSpy shown(&list, &LessonListPage::statusesShown);
+  {
+    const testing::HistoryThreads threads;
+    list.show(lessons_, Viewer{ana_, Role::Trainee}, QStringLiteral("Ana"), QStringLiteral("en"));
+    EXPECT_FALSE(list.statusesLoaded());
+    EXPECT_EQ(list.statusText(0), QStringLiteral("…"));
+    ASSERT_TRUE(shown.count() > 0 || shown.wait(20000));
+    EXPECT_TRUE(list.statusesLoaded());
+    EXPECT_GT(threads.accesses(), 0);
+    EXPECT_EQ(threads.onGuiThread(), 0);
+  }
   ReviewPage grid(history_, Viewer{instructor_, Role::Instructor});
   ASSERT_EQ(grid.shownTrainees().size(), 1);
 

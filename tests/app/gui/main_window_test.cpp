@@ -1,10 +1,12 @@
 #include "gui/main_window.h"
+#include "gui/app_settings.h"
 #include "gui/viewport.h"
 #include "gui/pages/attempt_page.h"
 #include "gui/pages/sign_in_page.h"
 
 #include <QImage>
 #include <QMenuBar>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -80,6 +82,26 @@ TEST(MainWindow, QuitActionClosesTheWindow) {
   ASSERT_NE(quit, nullptr);
   quit->trigger();
   EXPECT_FALSE(w.window->isVisible());
+}
+
+// View → Depth of field: off by default on this software renderer, toggles the viewport's
+// blur and is remembered for the next window
+TEST(MainWindow, TheViewMenuTurnsDepthOfFieldOnAndRemembersIt) {
+  QSettings().remove(settings::depthOfField());
+  {
+    OpenWindow w;
+    auto* focus = w.window->findChild<QAction*>(QStringLiteral("depthOfFieldAction"));
+    ASSERT_NE(focus, nullptr);
+    EXPECT_TRUE(focus->isCheckable());
+    EXPECT_FALSE(focus->isChecked());
+    EXPECT_FALSE(w.window->viewport()->depthOfField());
+    focus->trigger();
+    EXPECT_TRUE(w.window->viewport()->depthOfField());
+  }
+  OpenWindow again;
+  EXPECT_TRUE(again.window->viewport()->depthOfField());
+  EXPECT_TRUE(again.window->findChild<QAction*>(QStringLiteral("depthOfFieldAction"))->isChecked());
+  QSettings().remove(settings::depthOfField());
 }
 
 TEST(MainWindow, DescribesAnUnusableDatabase) {

@@ -8,6 +8,7 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QLineF>
 #include <QSignalSpy>
 #include <QTest>
 #include <QWheelEvent>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace microsim::gui {
 namespace {
@@ -123,22 +125,36 @@ TEST(Viewport, ShowsTheVesselWhereItProjectsAndTheBackgroundElsewhere) {
   }
 }
 
-TEST(Viewport, DrawsTheSutureAsATubeWhereTheSnapshotHasIt) {
-  Fixture f;
-  const QImage image = f.draw();
+// the microscope zoomed out until the whole thread lies inside the circular field of view
+void zoomOutToTheWholeThread(Fixture& f) {
+  f.view->camera().zoom(-12.0f);
+  f.view->cameraChanged();
+}
+
+// where every third node of the thread in the runner's latest snapshot lands on the image
+std::vector<QPoint> threadNodesOnImage(const Fixture& f, const QImage& image) {
   const auto s = f.runner.latestSnapshot();
-  ASSERT_TRUE(s);
+  EXPECT_TRUE(s);
+  std::vector<QPoint> points;
+  if (!s) return points;
   const int nodes = static_cast<int>(s->suturePositions.size() / 3);
-  ASSERT_GT(nodes, s->needleNodes + 10);
-  int visible = 0;
-  int found = 0;
+  EXPECT_GT(nodes, s->needleNodes + 10);
   for (int i = s->needleNodes + 2; i < nodes; i += 3) {
     const auto k = 3 * static_cast<std::size_t>(i);
     const auto p = f.project(Eigen::Vector3d(s->suturePositions[k], s->suturePositions[k + 1], s->suturePositions[k + 2]), image);
-    if (!p) continue;
-    ++visible;
-    if (anyNear(image, *p, 2, threadBlue)) ++found;
+    if (p) points.push_back(*p);
   }
+  return points;
+}
+
+TEST(Viewport, DrawsTheSutureAsATubeWhereTheSnapshotHasIt) {
+  Fixture f;
+  zoomOutToTheWholeThread(f);
+  const QImage image = f.draw();
+  const std::vector<QPoint> nodes = threadNodesOnImage(f, image);
+  const auto visible = static_cast<int>(nodes.size());
+  int found = 0;
+  for (const QPoint& p : nodes) found += anyNear(image, p, 2, threadBlue) ? 1 : 0;
   ASSERT_GE(visible, 3);
   EXPECT_GE(found, visible * 8 / 10) << found << " of " << visible;
   // and nowhere far from it: the image's blue pixels are few
@@ -261,6 +277,112 @@ TEST(Viewport, TheSideViewShowsAToolAboveTheTissue) {
   f.view->setSideViewVisible(false);
   const QImage plain = f.draw();
   EXPECT_FALSE(anyNear(plain, *jaw, 2, jawMetal));
+}
+
+// ---- the microscope's look (issue #20, item 7) -----------------------------------------------
+
+int luminance(QRgb c) { return (299 * qRed(c) + 587 * qGreen(c) + 114 * qBlue(c)) / 1000; }
+
+TEST(Viewport, TheFieldOfViewIsACircleBlackOutsideAndTheSideViewIsNotMasked) {
+  Fixture f;
+  const QImage image = f.draw();
+  ASSERT_EQ(image.height(), 600);
+  // three corners black (the fourth holds the side view); the middle of the field bright
+  for (const QPoint corner : {QPoint(3, 3), QPoint(3, image.height() - 4), QPoint(image.width() - 4, image.height() - 4)})
+    EXPECT_LT(luminance(image.pixel(corner)), 8) << corner.x() << ", " << corner.y() << ": " << std::hex << image.pixel(corner);
+  const QPoint middle(image.width() / 2, image.height() / 2);
+  EXPECT_GT(luminance(image.pixel(middle)), 40) << std::hex << image.pixel(middle);
+  // the field is as wide as the smaller side: bright at 80 % of its radius along the long
+  // side, black just beyond it
+  const int radius = image.height() / 2;
+  EXPECT_GT(luminance(image.pixel(middle + QPoint(-8 * radius / 10, 0))), 25);
+  EXPECT_LT(luminance(image.pixel(middle + QPoint(-radius - 4, 0))), 8);
+  // the side view in the top-right corner keeps its own background, unmasked
+  const QRect inset = sideViewArea(f.view->size());
+  EXPECT_GT(luminance(image.pixel(inset.topRight() + QPoint(-6, 6))), 40);
+}
+
+TEST(Viewport, TheWallIsTexturedNotOneFlatColourAlongTheVessel) {
+  Fixture f;
+  f.view->setDepthOfField(false);
+  const QImage image = f.draw();
+  // along the top of the left vessel end the cylinder's lighting is the same at every x: what
+  // varies there is the wall's texture
+  const Eigen::Vector3d toEye = (f.runner.sceneDef()->camera.eye - f.runner.sceneDef()->camera.target).normalized();
+  std::vector<int> greens;
+  for (double x = -3.0; x <= -0.6; x += 0.02) {
+    const auto p = f.project(Eigen::Vector3d(x, 0.0, 0.0) + 0.5 * toEye, image);
+    ASSERT_TRUE(p);
+    const QRgb c = image.pixel(*p);
+    ASSERT_TRUE(reddish(c)) << x << ": " << std::hex << c;
+    greens.push_back(qGreen(c));
+  }
+  double mean = 0.0;
+  for (int g : greens) mean += g;
+  mean /= static_cast<double>(greens.size());
+  double variance = 0.0;
+  for (int g : greens) variance += (g - mean) * (g - mean);
+  variance /= static_cast<double>(greens.size());
+  EXPECT_GT(std::sqrt(variance), 4.0) << "a flat-coloured cylinder varies by about 0 here";
+}
+
+TEST(Viewport, TheThreadContrastsWithWhatIsAroundIt) {
+  Fixture f;
+  // far out: the thread is as thin as the viewport ever draws it (about a pixel's radius)
+  zoomOutToTheWholeThread(f);
+  const QImage image = f.draw();
+  int visible = 0;
+  int contrasting = 0;
+  for (const QPoint& node : threadNodesOnImage(f, image)) {
+    if (QLineF(node, QPointF(400, 300)).length() > 270.0) continue;  // within the field
+    ++visible;
+    // the thread pixel near the node against the brightest pixel a few pixels around it
+    int thread = 255;
+    int around = 0;
+    for (int dy = -5; dy <= 5; ++dy)
+      for (int dx = -5; dx <= 5; ++dx) {
+        const QPoint q = node + QPoint(dx, dy);
+        if (!image.valid(q)) continue;
+        const int l = luminance(image.pixel(q));
+        if (std::abs(dx) <= 2 && std::abs(dy) <= 2 && threadBlue(image.pixel(q))) thread = std::min(thread, l);
+        around = std::max(around, l);
+      }
+    if (thread < 255 && around - thread >= 50) ++contrasting;
+  }
+  ASSERT_GE(visible, 3);
+  EXPECT_GE(contrasting, visible * 8 / 10) << contrasting << " of " << visible;
+}
+
+// summed |difference| of horizontally adjacent pixels over `area`: the picture's sharpness
+long gradientEnergy(const QImage& image, const QRect& area) {
+  long sum = 0;
+  for (int y = area.top(); y <= area.bottom(); ++y)
+    for (int x = area.left(); x < area.right(); ++x) sum += std::abs(luminance(image.pixel(x + 1, y)) - luminance(image.pixel(x, y)));
+  return sum;
+}
+
+TEST(Viewport, DepthOfFieldBlursWhatLiesOffTheFocalPlaneAndCanBeTurnedOff) {
+  Fixture f;
+  EXPECT_TRUE(f.view->depthOfField());
+  const QImage focused = f.draw();
+  // the focal plane well above the vessel: the vessel is out of focus
+  f.view->camera().setFocusDistance(f.view->camera().distance() * 0.8f);
+  f.view->cameraChanged();
+  const QImage blurred = f.draw();
+  f.view->setDepthOfField(false);
+  const QImage sharp = f.draw();
+  // around the gap between the vessel's ends: its edges and the wall's texture
+  const auto a = f.project(Eigen::Vector3d(-1.5, -0.6, 0.0), sharp);
+  const auto b = f.project(Eigen::Vector3d(1.5, 0.6, 0.0), sharp);
+  ASSERT_TRUE(a && b);
+  const QRect area = QRect(*a, *b).normalized();
+  ASSERT_GT(area.width(), 50);
+  const long onBlurred = gradientEnergy(blurred, area);
+  const long offSharp = gradientEnergy(sharp, area);
+  const long onFocused = gradientEnergy(focused, area);
+  EXPECT_GT(offSharp, onBlurred * 13 / 10) << offSharp << " against " << onBlurred;
+  // in focus the vessel is as sharp with depth of field as without it
+  EXPECT_GT(onFocused, onBlurred * 13 / 10) << onFocused << " against " << onBlurred;
 }
 
 TEST(Viewport, KeysDriveTheManualSourceAndF1ShowsTheHelp) {

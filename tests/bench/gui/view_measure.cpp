@@ -2,7 +2,7 @@
 // scene in real time, the simulation's achieved step rate, and the tool-move latency.
 //
 //   xvfb-run -a -s "-screen 0 1920x1080x24" microsim-view-measure SECONDS [SCENE|none] [WxH]
-//       [--idle] [--samples N]
+//       [--idle] [--samples N] [--depth-of-field on|off]
 //
 // SCENE defaults to resources/scenes/anastomosis.json and WxH to 1280x800; the surface format
 // is the app's (gui/render/surface_format.h, N = 4 samples unless --samples says otherwise).
@@ -11,6 +11,8 @@
 //                   scene's rate while the viewport redraws;
 //   --idle          the scene is loaded but never started: the same drawing, no simulation;
 //   none            no scene: the viewport's placeholder vessel, no simulation.
+// Depth of field as the app picks it on this renderer (render/renderer_probe.h: off on a
+// software one) unless --depth-of-field says otherwise.
 // The viewport redraws as fast as it can: each presented frame schedules the next update.
 //
 // Frame rate: frames presented (QOpenGLWidget::frameSwapped, emitted once the top-level window
@@ -153,7 +155,11 @@ int main(int argc, char** argv) {
   const QCommandLineOption samplesOption(QStringLiteral("samples"),
                                          QStringLiteral("multisampling (default what the app picks on this renderer)"),
                                          QStringLiteral("n"));
+  const QCommandLineOption focusOption(QStringLiteral("depth-of-field"),
+                                      QStringLiteral("blur off the focal plane: on or off (default what the app picks on this renderer)"),
+                                      QStringLiteral("on|off"));
   parser.addOption(idleOption);
+  parser.addOption(focusOption);
   parser.addOption(samplesOption);
   parser.addHelpOption();
   parser.process(app);
@@ -192,6 +198,10 @@ int main(int argc, char** argv) {
 
   Viewport view;
   view.resize(width, height);
+  const bool focus = parser.isSet(focusOption) ? parser.value(focusOption) == QStringLiteral("on")
+                                               : microsim::gui::depthOfFieldByDefault(renderer);
+  view.setDepthOfField(focus);
+  std::printf("depth of field %s\n", focus ? "on" : "off");
   if (withScene) view.setRunner(&runner);
 
   std::vector<double> stepMedians, stepP99s;

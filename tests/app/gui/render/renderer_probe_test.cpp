@@ -1,5 +1,6 @@
 // The renderer probe (render/renderer_probe.h): software rasterisers are told apart from GPUs by
-// their GL_RENDERER string, and the viewport drops multisampling on them; under Xvfb the probe
+// their GL_RENDERER string, and the viewport drops multisampling and the depth-of-field blur on
+// them by default; under Xvfb the probe
 // finds Mesa's software renderer.
 #include "gui/render/renderer_probe.h"
 #include "gui/render/surface_format.h"
@@ -24,6 +25,11 @@ TEST(RendererProbe, SoftwareRasterisersAreToldFromGpus) {
 TEST(RendererProbe, OnlyAGpuGetsMultisampling) {
   EXPECT_EQ(microscopeSamplesFor(QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)")), 0);
   EXPECT_EQ(microscopeSamplesFor(QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2")), kMicroscopeSamples);
+}
+
+TEST(RendererProbe, OnlyAGpuBlursOffTheFocalPlaneByDefault) {
+  EXPECT_FALSE(depthOfFieldByDefault(QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)")));
+  EXPECT_TRUE(depthOfFieldByDefault(QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2")));
 }
 
 TEST(RendererProbe, UnderXvfbTheProbeFindsMesasSoftwareRenderer) {
