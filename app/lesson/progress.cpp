@@ -51,7 +51,7 @@ namespace {
 
 bool targetHit(const Guide& guide, const AttemptFacts& facts, double toleranceMm) {
   return std::any_of(facts.pierces.begin(), facts.pierces.end(), [&](const sim::PierceEvent& p) {
-    return (p.point - guide.target).norm() <= toleranceMm;
+    return (p.restPoint - guide.target).norm() <= toleranceMm;
   });
 }
 

@@ -84,7 +84,7 @@ TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
                            QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                            QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  EXPECT_TRUE(r.out.contains(QStringLiteral("70.0"))) << r.out.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("94.4"))) << r.out.toStdString();
   EXPECT_NEAR(readScoreJson(out).value(QStringLiteral("score")).toDouble(),
               microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }

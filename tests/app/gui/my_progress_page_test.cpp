@@ -57,7 +57,7 @@ class MyProgress : public ::testing::Test {
     // it, then a clean one; Ben's attempt and note must not show
     const assessment::Rubric rubric = testing::shippedLessonRubric(kProgressLesson);
     first_ = testing::storeFinishedAttempt(history_, ana_, kProgressLesson, AttemptMode::Test,
-                                           testing::scoreOnRubric(rubric, {{"entry_angle", 40.0}}));
+                                           testing::scoreOnRubric(rubric, {{"entry_angle", 65.0}}));
     second_ = testing::storeFinishedAttempt(history_, ana_, kProgressLesson, AttemptMode::Test, testing::scoreOnRubric(rubric));
     const qint64 bens = testing::storeFinishedAttempt(history_, ben, kProgressLesson, AttemptMode::Test, testing::scoreOnRubric(rubric));
     assessment::AnnotationStore notes(history_);
