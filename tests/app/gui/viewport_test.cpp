@@ -310,7 +310,8 @@ TEST(Viewport, TheWallIsTexturedNotOneFlatColourAlongTheVessel) {
   // varies there is the wall's texture
   const Eigen::Vector3d toEye = (f.runner.sceneDef()->camera.eye - f.runner.sceneDef()->camera.target).normalized();
   std::vector<int> greens;
-  for (double x = -3.0; x <= -0.6; x += 0.02) {
+  for (int k = 0; k <= 120; ++k) {
+    const double x = -3.0 + 0.02 * k;  // -3.0 … -0.6 mm
     const auto p = f.project(Eigen::Vector3d(x, 0.0, 0.0) + 0.5 * toEye, image);
     ASSERT_TRUE(p);
     const QRgb c = image.pixel(*p);

@@ -94,7 +94,7 @@ TEST(AttemptPageScissors, ScissorsClosedOnTheDrawnThreadCutItAndThePageSaysSo) {
   const std::vector<QPoint> thread = threadPixelsDrawn(*app.view);
   ASSERT_GT(thread.size(), 50u) << "the thread is drawn in the top view";
   const sim::RenderSnapshot& start = app.drawn();
-  const auto swage = static_cast<std::size_t>(3 * (start.needleNodes - 1));
+  const std::size_t swage = 3 * static_cast<std::size_t>(start.needleNodes - 1);
   const QPoint needle = app.drawnAt(Eigen::Vector3d(start.suturePositions[swage], start.suturePositions[swage + 1],
                                                     start.suturePositions[swage + 2]));
   const QPoint cutAt = alongDrawnThread(thread, needle, 1.5 * pixelsPerMm);
