@@ -6,76 +6,24 @@
 // again where the tool is drawn and corrects, as the eye does.
 #include "gui/main_window.h"
 #include "gui/pages/results_page.h"
-#include "gui/simulation_runner.h"
-#include "gui/viewport.h"
 
-#include <QLineEdit>
-#include <QPushButton>
-#include <QSettings>
-#include <QSignalSpy>
-#include <QTableWidget>
-#include <QTemporaryDir>
 #include <QTest>
 
-#include "app/gui/core_profile.h"
+#include "app/gui/lesson_at_window.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
-#include <memory>
 #include <numbers>
 
 namespace microsim::gui {
 namespace {
 
-// the app with a fresh history, a trainee signed in and lesson `row` open in Learn mode
-struct HandsApp {
-  QTemporaryDir dir;
-  assessment::HistoryDatabase history;
-  std::unique_ptr<MainWindow> window;
-  Viewport* view = nullptr;
-  AttemptPage* attempt = nullptr;
+// lesson `row` open in Learn mode at the real window (lesson_at_window.h), with what these
+// lessons add: where each forceps is drawn, a right click, the vessel's rows in the picture
+struct HandsApp : testing::LessonAtWindow {
+  explicit HandsApp(int row) : LessonAtWindow(row, QStringLiteral("Eve Hands")) {}
 
-  explicit HandsApp(int row) {
-    QSettings().clear();
-    requestCoreProfile();
-    const QString path = dir.filePath(QStringLiteral("history.sqlite"));
-    const assessment::DatabaseStatus status = history.open(path);
-    EXPECT_TRUE(status.ok());
-    window = std::make_unique<MainWindow>(&history, status, path);
-    window->resize(1100, 760);
-    window->show();
-    EXPECT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    auto* name = window->findChild<QLineEdit*>(QStringLiteral("newTraineeName"));
-    QTest::mouseClick(name, Qt::LeftButton);
-    QTest::keyClicks(name, QStringLiteral("Eve Hands"));
-    QTest::mouseClick(window->findChild<QPushButton*>(QStringLiteral("createTraineeButton")), Qt::LeftButton);
-    auto* table = window->findChild<QTableWidget*>(QStringLiteral("lessonTable"));
-    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualItemRect(table->item(row, 0)).center());
-    QTest::mouseClick(window->findChild<QPushButton*>(QStringLiteral("learnButton")), Qt::LeftButton);
-    attempt = window->attemptPage();
-    view = window->viewport();
-    EXPECT_TRUE(attempt->isActive());
-    EXPECT_TRUE(QTest::qWaitFor([this] { return attempt->runner()->steps() > 5 && view->drawnStep() > 5; }, 20000));
-  }
-
-  // lets the simulation take `steps` steps and the viewport draw the result
-  void settle(int steps = 3) {
-    const int target = attempt->runner()->steps() + steps;
-    EXPECT_TRUE(QTest::qWaitFor([&] { return view->drawnStep() >= target; }, 20000));
-  }
-
-  // where a scene point is drawn (pixels of the viewport)
-  QPoint onScreen(const Eigen::Vector3d& p) const {
-    const MicroscopeCamera& c = view->camera();
-    const QMatrix4x4 m = c.projection(static_cast<float>(view->width()) / static_cast<float>(view->height())) * c.view();
-    const QVector4D clip = m * QVector4D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()), 1.0f);
-    return {qRound((clip.x() / clip.w() + 1.0f) * 0.5f * static_cast<float>(view->width())),
-            qRound((1.0f - clip.y() / clip.w()) * 0.5f * static_cast<float>(view->height()))};
-  }
-
-  const sim::RenderSnapshot& drawn() const { return *view->drawnSnapshot(); }
   Eigen::Vector3d toolTip(sim::Hand hand) const {
     return drawn().forceps[static_cast<std::size_t>(hand)].pose.block<3, 1>(0, 3).cast<double>();
   }
@@ -84,40 +32,9 @@ struct HandsApp {
     return {drawn().suturePositions[k], drawn().suturePositions[k + 1], drawn().suturePositions[k + 2]};
   }
 
-  void key(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier, int times = 1) {
-    for (int k = 0; k < times; ++k) {
-      QTest::keyClick(view, static_cast<Qt::Key>(key), modifiers);
-      settle(2);
-    }
-  }
-
-  // a left drag from `from` by `by` pixels, in moves of at most 8 pixels with steps between
-  void drag(QPoint from, QPoint by) {
-    QTest::mousePress(view, Qt::LeftButton, {}, from);
-    const int moves = std::max(1, (std::max(std::abs(by.x()), std::abs(by.y())) + 7) / 8);
-    for (int k = 1; k <= moves; ++k) {
-      QTest::mouseMove(view, from + by * k / moves);
-      settle(1);
-    }
-    QTest::mouseRelease(view, Qt::LeftButton, {}, from + by);
-    settle();
-  }
-
-  // drags the point `grab` (where something is drawn that moves with the active tool) until
-  // it is drawn at `to`: look, drag, look again
-  void dragUntil(const std::function<QPoint()>& grab, const std::function<QPoint()>& to) {
-    for (int tries = 0; tries < 8; ++tries) {
-      const QPoint at = grab();
-      const QPoint by = to() - at;
-      if (by.manhattanLength() <= 1) return;
-      drag(at, by);
-    }
-    ADD_FAILURE() << "the tool never reached the place";
-  }
-
   void rightClick() {
     QTest::mouseClick(view, Qt::RightButton, {}, QPoint(view->width() / 2, view->height() / 2));
-    settle();
+    waitSteps();
   }
 
   // the topmost and bottommost rows of the vessel's colour in column x of the picture
@@ -134,12 +51,11 @@ struct HandsApp {
     return {top, bottom};
   }
 
+  // the attempt finished, on the results page
   AttemptResult finish() {
-    QSignalSpy finished(attempt, &AttemptPage::finished);
-    QTest::mouseClick(window->findChild<QPushButton*>(QStringLiteral("finishButton")), Qt::LeftButton);
-    EXPECT_TRUE(finished.count() > 0 || finished.wait(180000));
+    AttemptResult result = LessonAtWindow::finish();
     EXPECT_EQ(window->currentPage(), window->resultsPage());
-    return window->resultsPage()->result();
+    return result;
   }
 };
 
@@ -150,10 +66,10 @@ struct HandsApp {
 TEST(HandsLessons, LessonOneGrabAndStretchByMouseAndKeys) {
   HandsApp app(0);
   app.view->setFocus();
-  app.key(Qt::Key_1);
-  app.key(Qt::Key_Right, Qt::NoModifier, 9);
+  app.press(Qt::Key_1);
+  app.press(Qt::Key_Right, 9);
   const sim::Hand right = sim::Hand::Right;
-  const auto tip = [&] { return app.onScreen(app.toolTip(right)); };
+  const auto tip = [&] { return app.drawnAt(app.toolTip(right)); };
 
   // top view: onto the middle of the vessel, 15 pixels beside the tool's own column
   const auto middle = [&] {
@@ -164,7 +80,7 @@ TEST(HandsLessons, LessonOneGrabAndStretchByMouseAndKeys) {
   app.dragUntil(tip, middle);
 
   // side view: the tips three pixels into the vessel's top edge
-  app.key(Qt::Key_3);
+  app.press(Qt::Key_3);
   // named ints, not a structured binding: lambdas capture them (clang 14)
   const auto rows = app.vesselRows(tip().x() + 15);
   const int top = rows.first;
@@ -196,10 +112,10 @@ TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   HandsApp app(1);
   app.view->setFocus();
   const sim::Hand left = sim::Hand::Left;
-  const auto tip = [&] { return app.onScreen(app.toolTip(left)); };
-  app.key(Qt::Key_Tab);
-  app.key(Qt::Key_1);
-  app.key(Qt::Key_Left, Qt::NoModifier, 9);
+  const auto tip = [&] { return app.drawnAt(app.toolTip(left)); };
+  app.press(Qt::Key_Tab);
+  app.press(Qt::Key_1);
+  app.press(Qt::Key_Left, 9);
 
   // the needle between the jaws near its back end, between its last two drawn nodes (a grip
   // far from the tip keeps the jaws above the walls to the end of the pass)
@@ -207,23 +123,23 @@ TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   ASSERT_EQ(needleNodes, 9);
   const auto gripPoint = [&]() -> Eigen::Vector3d { return 0.5 * (app.needleNode(7) + app.needleNode(8)); };
   // (the height first: the top view's perspective is then right for where the needle lies)
-  app.key(Qt::Key_3);
+  app.press(Qt::Key_3);
   const double pixelsPerMm = 1.0 / app.view->camera().mmPerPixel(app.view->height());
-  const auto underNeedle = [&] { return QPoint(tip().x(), app.onScreen(gripPoint()).y() + qRound(0.2 * pixelsPerMm)); };
+  const auto underNeedle = [&] { return QPoint(tip().x(), app.drawnAt(gripPoint()).y() + qRound(0.2 * pixelsPerMm)); };
   app.dragUntil(tip, underNeedle);
-  app.key(Qt::Key_1);
-  app.dragUntil(tip, [&] { return app.onScreen(gripPoint()); });
-  app.key(Qt::Key_3);
+  app.press(Qt::Key_1);
+  app.dragUntil(tip, [&] { return app.drawnAt(gripPoint()); });
+  app.press(Qt::Key_3);
   app.dragUntil(tip, underNeedle);
   app.rightClick();
   ASSERT_TRUE(app.drawn().forceps[0].holdsSuture) << "the needle is held";
 
   // stood up in the plane of the marks: 79° about the top view's right axis
-  app.key(Qt::Key_1);
-  app.key(Qt::Key_Up, Qt::NoModifier, 15);
-  app.key(Qt::Key_Up, Qt::ShiftModifier, 4);
+  app.press(Qt::Key_1);
+  app.press(Qt::Key_Up, 15);
+  app.press(Qt::Key_Up, 4, Qt::ShiftModifier);
   // along its curve until its tip is 70° before the bottom of its circle (from the top: 110°)
-  app.key(Qt::Key_X, Qt::NoModifier, 55);
+  app.press(Qt::Key_X, 55);
 
   // the circle through the two marks with the needle's radius, above the wall (the side the
   // arrows come from), and the point 70° before its bottom
@@ -241,17 +157,17 @@ TEST(HandsLessons, LessonTwoGripTheNeedleAndPassItAlongItsCurve) {
   const Eigen::Vector3d startPoint = centre + radius * (std::sin(start) * eu - std::cos(start) * ew);
 
   // the needle's drawn tip onto that point: side view, then top view, then side view again
-  const auto needleTip = [&] { return app.onScreen(app.needleNode(0)); };
+  const auto needleTip = [&] { return app.drawnAt(app.needleNode(0)); };
   for (const int view : {Qt::Key_3, Qt::Key_1, Qt::Key_3, Qt::Key_1}) {
-    app.key(view);
+    app.press(view);
     const auto grabAt = [&] { return tip(); };
-    const auto to = [&] { return tip() + app.onScreen(startPoint) - needleTip(); };
+    const auto to = [&] { return tip() + app.drawnAt(startPoint) - needleTip(); };
     app.dragUntil(grabAt, to);
   }
   EXPECT_LT((app.needleNode(0) - startPoint).norm(), 0.05);
 
   // along its curve, 130°, a press at a time: the tip through both walls and out
-  app.key(Qt::Key_X, Qt::NoModifier, 65);
+  app.press(Qt::Key_X, 65);
   EXPECT_TRUE(QTest::qWaitFor([&] { return app.attempt->stepsDone() >= 2; }, 20000)) << "both marks hit";
   app.rightClick();  // let go
 

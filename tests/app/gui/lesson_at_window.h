@@ -25,23 +25,23 @@
 #include <functional>
 #include <memory>
 
-namespace microsim::gui::testing {
+namespace microsim::testing {
 
 struct LessonAtWindow {
   QTemporaryDir dir;
   assessment::HistoryDatabase history;
-  std::unique_ptr<MainWindow> window;
-  Viewport* view = nullptr;
-  AttemptPage* attempt = nullptr;
+  std::unique_ptr<gui::MainWindow> window;
+  gui::Viewport* view = nullptr;
+  gui::AttemptPage* attempt = nullptr;
 
   /// Lesson `row` of the lesson list, opened in Learn mode by the trainee `trainee`.
   LessonAtWindow(int row, const QString& trainee) {
     QSettings().clear();
-    requestCoreProfile();
+    gui::requestCoreProfile();
     const QString path = dir.filePath(QStringLiteral("history.sqlite"));
     const assessment::DatabaseStatus status = history.open(path);
     EXPECT_TRUE(status.ok());
-    window = std::make_unique<MainWindow>(&history, status, path);
+    window = std::make_unique<gui::MainWindow>(&history, status, path);
     window->resize(1100, 760);
     window->show();
     EXPECT_TRUE(QTest::qWaitForWindowExposed(window.get()));
@@ -67,7 +67,7 @@ struct LessonAtWindow {
 
   /// Where a scene point is drawn (pixels of the viewport).
   QPoint drawnAt(const Eigen::Vector3d& p) const {
-    const MicroscopeCamera& c = view->camera();
+    const gui::MicroscopeCamera& c = view->camera();
     const QMatrix4x4 m = c.projection(static_cast<float>(view->width()) / static_cast<float>(view->height())) * c.view();
     const QVector4D clip = m * QVector4D(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()), 1.0f);
     return {qRound((clip.x() / clip.w() + 1.0f) * 0.5f * static_cast<float>(view->width())),
@@ -108,12 +108,12 @@ struct LessonAtWindow {
   }
 
   /// Finish attempt clicked; the result once scored.
-  AttemptResult finish() {
-    QSignalSpy finished(attempt, &AttemptPage::finished);
+  gui::AttemptResult finish() {
+    QSignalSpy finished(attempt, &gui::AttemptPage::finished);
     QTest::mouseClick(window->findChild<QPushButton*>(QStringLiteral("finishButton")), Qt::LeftButton);
     EXPECT_TRUE(finished.count() > 0 || finished.wait(180000));
     return window->resultsPage()->result();
   }
 };
 
-}  // namespace microsim::gui::testing
+}  // namespace microsim::testing
