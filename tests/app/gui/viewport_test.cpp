@@ -4,6 +4,7 @@
 #include "gui/render/side_view.h"
 #include "gui/simulation_runner.h"
 #include "tracking/manual_source.h"
+#include "support/queued_signal_spy.h"
 #include "support/shipped_files.h"
 
 #include <QApplication>
@@ -60,9 +61,10 @@ struct Fixture {
     return view->grabFramebuffer();
   }
 
-  // steps the scene once with this frame and waits for its snapshot
+  // steps the scene once with this frame and waits for its snapshot; the runner signals from
+  // its own thread, so the spy takes the call through this thread's event queue
   void replay(const sim::InputFrame& frame) {
-    QSignalSpy done(&runner, &SimulationRunner::replayFinished);
+    microsim::testing::QueuedSignalSpy done(&runner, &SimulationRunner::replayFinished);
     runner.replay({frame});
     EXPECT_TRUE(done.count() > 0 || done.wait(10000));
   }
