@@ -2,6 +2,12 @@
 
 namespace microsim::sim::tools {
 
+namespace {
+/// mm the face's point may lie past the tip before the tip counts as no longer pressing on it:
+/// far above the spring's own give (wall force / stiffness, below 0.1 µm), far below a dent
+constexpr double kFacePastTip = 1e-3;
+}  // namespace
+
 Indentation beginIndentation(const FaceCrossing& entry) {
   Indentation in;
   in.touch = entry;
@@ -32,7 +38,14 @@ double indentationForce(const SpringModel& tissue, const Points& x, const Indent
 }
 
 bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip) {
-  return (tip - indentedPoint(tissue, x, in)).dot(in.side) > 0.0;
+  // The spring holds the face's point on the tip to within the wall's force over its
+  // stiffness (a fraction of a micrometre), on the far side while the tip presses and on the
+  // near side while it draws the caught face back: too little to tell the two apart after a
+  // solve stopped at its tolerance. So the tip counts as drawn back once it is back on its
+  // own side of where it first touched the face, or once the face is clearly past it (moved
+  // by something stronger than the spring).
+  if ((tip - in.touch.point).dot(in.side) > 0.0) return true;
+  return (tip - indentedPoint(tissue, x, in)).dot(in.side) > kFacePastTip;
 }
 
 std::vector<int> facesAround(const SpringModel& tissue, int face) {

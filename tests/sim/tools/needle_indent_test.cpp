@@ -67,6 +67,21 @@ TEST(NeedleIndent, TheForceIsTheSpringsPullAlongTheTipsTravel) {
   EXPECT_LT(indentationForce(m, x, in, tip, travel, k), 0.0);
 }
 
+// After a solve the spring holds the face's point on the tip to within the solve's tolerance,
+// on either side of it; a tip still beyond where it first touched is still pressing, and only
+// a face clearly past the tip, or a tip back past the first touch, ends the dent.
+TEST(NeedleIndent, AFaceHeldOnTheTipWithinTheSolvesToleranceIsStillPressed) {
+  const SpringModel m = twoFacesInAPlane();
+  const Indentation in = beginIndentation(entryAtCentre());
+  Points x = m.restPositions();
+  // the face dented 0.02 mm, its point a hair (1e-9 mm) deeper than the tip
+  x.row(2).array() -= 0.02;
+  const Vec3 tip = in.touch.point - Vec3(0.0, 0.0, 0.02 - 1e-9);
+  EXPECT_FALSE(tipWithdrawn(m, x, in, tip));
+  // the tip drawn back above where it first touched: it no longer presses
+  EXPECT_TRUE(tipWithdrawn(m, x, in, in.touch.point + Vec3(0.0, 0.0, 1e-6)));
+}
+
 TEST(NeedleIndent, FacesAroundAFaceShareACornerWithIt) {
   const SpringModel m = twoFacesInAPlane();
   EXPECT_EQ(facesAround(m, 0), (std::vector<int>{0, 1}));

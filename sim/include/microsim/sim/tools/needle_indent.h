@@ -17,9 +17,13 @@
 //     f = k (t − g)·τ        (µN)
 // with t the tip, g the face point and k the spring's stiffness. The wall is punctured, and
 // the pierce made at the face point, when f reaches the puncture force. The indentation ends
-// without a pierce when the tip draws back past the face point, (t − g)·s > 0 with s the
-// face normal at first touch turned towards the side the tip came from, or when the needle is
-// let go. Only a tip that moves point first cuts: one going back, tail first, follows the
+// without a pierce when the tip draws back past the point where it first touched,
+// (t − p₀)·s > 0 with s the face normal at first touch turned towards the side the tip came
+// from, when the face's point lies clearly past the tip ((t − g)·s above 1 µm: something
+// stronger than the spring moved the wall away), or when the needle is let go. (The sign of
+// (t − g)·s alone cannot tell: the spring keeps g within a fraction of a micrometre of t,
+// the solve's tolerance, and a test on it ended dents at random, so a tip pressing into a
+// wall from the lumen slipped through it with no pierce.) Only a tip that moves point first cuts: one going back, tail first, follows the
 // channel it cut, and an entry it makes pierces at once. At the puncture the tip sits in the dent's apex, so going on it may cross the
 // dent's other faces (those around the punctured one, facesAround): those entries are the
 // same passage, and the scene ignores them until the tip's next crossing.
@@ -54,7 +58,8 @@ PointSpring indentationSpring(const SpringModel& tissue, const Indentation& in, 
 double indentationForce(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
                         const Vec3& travel, double k);
 
-/// Whether the tip has drawn back past the face's point: (t − g)·s > 0.
+/// Whether the tip no longer presses on the face: back past where it first touched, or the
+/// face's point clearly past it.
 bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip);
 
 /// The faces that share a corner with `face`, itself included, in index order.
