@@ -11,7 +11,10 @@ namespace {
 
 const Material kDrapeMaterial{{0.08f, 0.26f, 0.28f}, 0.05f, 8.0f};
 const Material kVesselMaterial{kVesselOuter, 0.35f, 48.0f};
-const Material kJawMaterial{{0.62f, 0.64f, 0.68f}, 0.8f, 64.0f};
+// microforceps and scissor shafts have a non-glare finish (dark titanium), as real ones do so
+// that they do not dazzle under the microscope's light; the polished needle is the one bright
+// metal in the field, which is how the eye finds it
+const Material kJawMaterial{{0.18f, 0.19f, 0.21f}, 0.06f, 10.0f};
 const Material kBladeMaterial{{0.72f, 0.74f, 0.78f}, 0.9f, 96.0f};
 const Material kNeedleMaterial{{0.80f, 0.80f, 0.84f}, 0.9f, 80.0f};
 // a deep saturated blue: darker than the drape and the wall, so the thread reads against both

@@ -96,12 +96,13 @@ struct LessonAtWindow {
     waitSteps();
   }
 
-  /// Drags what is drawn at `grab()` (it moves with the active tool) until it is drawn at `to()`.
-  void dragUntil(const std::function<QPoint()>& grab, const std::function<QPoint()>& to) {
+  /// Drags what is drawn at `grab()` (it moves with the active tool) until it is drawn within
+  /// `near` pixels (Manhattan) of `to()`.
+  void dragUntil(const std::function<QPoint()>& grab, const std::function<QPoint()>& to, int near = 1) {
     for (int tries = 0; tries < 8; ++tries) {
       const QPoint at = grab();
       const QPoint by = to() - at;
-      if (by.manhattanLength() <= 1) return;
+      if (by.manhattanLength() <= near) return;
       drag(at, by);
     }
     ADD_FAILURE() << "the tool never reached the place";
