@@ -2,9 +2,10 @@
 
 namespace microsim::sim::tools {
 
-Indentation beginIndentation(const FaceCrossing& entry) {
+Indentation beginIndentation(const FaceCrossing& entry, double throughDepth) {
   Indentation in;
   in.touch = entry;
+  in.throughDepth = throughDepth;
   // an entry comes from the face's front: the normal already points at the tip's side
   in.side = entry.entry ? entry.normal : Vec3(-entry.normal);
   return in;
@@ -29,6 +30,14 @@ PointSpring indentationSpring(const SpringModel& tissue, const Indentation& in, 
 double indentationForce(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
                         const Vec3& travel, double k) {
   return k * (tip - indentedPoint(tissue, x, in)).dot(travel);
+}
+
+double indentationDepth(const Indentation& in, const Vec3& tip) { return (in.touch.point - tip).dot(in.side); }
+
+bool punctured(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
+               const Vec3& travel, double k, double punctureForce) {
+  if (indentationForce(tissue, x, in, tip, travel, k) >= punctureForce) return true;
+  return in.throughDepth > 0.0 && indentationDepth(in, tip) >= in.throughDepth;
 }
 
 bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip) {

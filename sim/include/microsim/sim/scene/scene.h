@@ -17,7 +17,8 @@
 //                 (pierce entry and exit; only while a forceps holds the needle: nothing
 //                 drives a loose needle through a wall; with a puncture force, an entry
 //                 first dents the wall under the tip and pierces only when the tip presses
-//                 hard enough, checked after the tissue solve: tools/needle_indent.h), a
+//                 hard enough or has carried the wall its thickness, checked after the
+//                 tissue solve: tools/needle_indent.h), a
 //                 scalpel's blade against the links; after the tissue solve the trees are
 //                 refit where nodes moved;
 //   tissue        the tissue solver runs with those controls and, where it takes soft
@@ -172,6 +173,8 @@ class Scene {
   void takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting);
   void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent);
   void checkPuncture();
+  /// mm: the thickness of the vessel wall `face` belongs to; 0 for other tissue
+  double wallThickness(int face) const;
   void assembleControls();
   void checkStretch(const std::vector<int>& moved);
   SolveReport solveTissue(const SolveBudget& budget, StepReport& report);
@@ -194,7 +197,6 @@ class Scene {
   std::unique_ptr<suture::ContactSurface> surface_;
   Vec3 tipBefore_ = Vec3::Zero();
   Vec3 tipAfter_ = Vec3::Zero();
-  Vec3 tangentBefore_ = Vec3::UnitX();
   Vec3 tangentAfter_ = Vec3::UnitX();
   bool needleHeld_ = false;
   SpringControls coupling_;                  ///< the suture's pull by position

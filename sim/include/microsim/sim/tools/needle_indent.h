@@ -16,7 +16,13 @@
 // force on the tip along its direction of travel τ (the needle's tangent at the tip) is
 //     f = k (t − g)·τ        (µN)
 // with t the tip, g the face point and k the spring's stiffness. The wall is punctured, and
-// the pierce made at the face point, when f reaches the puncture force. The indentation ends
+// the pierce made at the face point, when f reaches the puncture force, or when the tip has
+// carried the face its wall's thickness past where it touched,
+//     d = (p₀ − t)·s ≥ the wall thickness     (p₀ the first touch, s below)
+// (a wall that gives way as a whole never pushes back with the puncture force: the free end
+// of a severed vessel, entered from its lumen on a deep pass, rose with the tip and was carried
+// up and over it with no pierce; by then the tip has gone through where the wall was, and
+// the tissue it carried is the dent a real wall shows before it gives). The indentation ends
 // without a pierce when the tip draws back past the face point, (t − g)·s > 0 with s the
 // face normal at first touch turned towards the side the tip came from, or when the needle is
 // let go. Only a tip that moves point first cuts: one going back, tail first, follows the
@@ -38,10 +44,12 @@ namespace microsim::sim::tools {
 struct Indentation {
   FaceCrossing touch;         ///< the entry crossing that started it (face, barycentric)
   Vec3 side = Vec3::Zero();   ///< unit: the face normal at first touch, towards the tip's side
+  double throughDepth = 0.0;  ///< mm: the wall's thickness, d at which the tip is through; 0 = none
 };
 
-/// Starts an indentation at an entry crossing.
-Indentation beginIndentation(const FaceCrossing& entry);
+/// Starts an indentation at an entry crossing into a wall `throughDepth` thick (mm; 0 = the
+/// force alone punctures).
+Indentation beginIndentation(const FaceCrossing& entry, double throughDepth);
 
 /// The face's point under the tip at positions x (mm).
 Vec3 indentedPoint(const SpringModel& tissue, const Points& x, const Indentation& in);
@@ -53,6 +61,15 @@ PointSpring indentationSpring(const SpringModel& tissue, const Indentation& in, 
 /// (µN, > 0 when pushing).
 double indentationForce(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
                         const Vec3& travel, double k);
+
+/// How far the tip has gone past where it first touched, against the side it came from:
+/// d = (p₀ − t)·s (mm).
+double indentationDepth(const Indentation& in, const Vec3& tip);
+
+/// Whether the tip is through: it pushes with `punctureForce` (µN) along `travel`, or d has
+/// reached the indentation's throughDepth.
+bool punctured(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
+               const Vec3& travel, double k, double punctureForce);
 
 /// Whether the tip has drawn back past the face's point: (t − g)·s > 0.
 bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip);
