@@ -282,7 +282,7 @@ void Scene::stepSuture() {
     coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
 }
 
-PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const {
+PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const {
   PierceEvent e;
   e.time = time_;
   e.entry = c.entry;
@@ -298,7 +298,7 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
   const auto& corners = tissue.triangles()[static_cast<std::size_t>(c.face)];
   for (std::size_t k = 0; k < 3; ++k) e.restPoint += c.barycentric[static_cast<Eigen::Index>(k)] * rest.col(corners[k]);
   const Vec3 restNormal = tools::faceNormal(tissue, rest, c.face);
-  e.angleDeg = tools::pierceAngleDeg(tangent, restNormal.isZero(0.0) ? c.normal : restNormal);
+  e.angleDeg = tools::pierceAngleDeg(aimed, restNormal.isZero(0.0) ? c.normal : restNormal);
 
   // which vessel, which surface, which wall, how far from the cut
   const auto in = [&](const TriangleRange& r) { return c.face >= r.begin && c.face < r.end; };
@@ -363,12 +363,13 @@ void Scene::takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cut
       return;
     }
     // the needle's tangent where its body passes the crossing (tools/needle.h, Angles)
-    pierceAt(c, tools::needleTangentNear(*suture_, sutureState_.x, c.point));
+    const Vec3 tangent = tools::needleTangentNear(*suture_, sutureState_.x, c.point);
+    pierceAt(c, tangent, tangent);
   }
 }
 
-void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent) {
-  pierces_.push_back(describePierce(c, tangent));
+void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) {
+  pierces_.push_back(describePierce(c, tangent, aimed));
   addEvent(c.entry ? SceneEventKind::PierceEntry : SceneEventKind::PierceExit, -1,
            static_cast<int>(pierces_.size()) - 1, 1);
 
@@ -395,9 +396,9 @@ void Scene::checkPuncture() {
   tools::FaceCrossing c = indent_->touch;
   c.point = tools::indentedPoint(tissue, state_.x, *indent_);
   c.normal = tools::faceNormal(tissue, state_.x, c.face);
-  const Vec3 tangent = tools::needleTangentNear(*suture_, sutureState_.x, indent_->touch.point);
+  const Vec3 aimed = tools::needleTangentNear(*suture_, sutureState_.x, indent_->touch.point);
   indent_.reset();
-  pierceAt(c, tangent);
+  pierceAt(c, tangentAfter_, aimed);
   punctured_ = tools::facesAround(tissue, c.face);
 }
 

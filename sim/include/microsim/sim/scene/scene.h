@@ -171,7 +171,9 @@ class Scene {
   void applyCrossings();
   /// `cutting`: the tip moves point first (a tip going back follows its channel: no dent)
   void takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting);
-  void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent);
+  /// `tangent`: the needle's where it passes the hole now (PierceEvent::tangent); `aimed`:
+  /// where it passed the wall as the trainee met it, which the angle is read from
+  void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed);
   void checkPuncture();
   /// mm: the thickness of the vessel wall `face` belongs to; 0 for other tissue
   double wallThickness(int face) const;
@@ -179,7 +181,7 @@ class Scene {
   void checkStretch(const std::vector<int>& moved);
   SolveReport solveTissue(const SolveBudget& budget, StepReport& report);
   std::vector<std::uint8_t> jawSkip() const;
-  PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const;
+  PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const;
   void addEvent(SceneEventKind kind, int hand, int index, int count);
 
   double now() const { return clock_(); }
