@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <utility>
 
@@ -257,7 +258,6 @@ void Scene::stepSuture() {
   suture::SutureStepParams params = def_.needle->step;
   params.dt = dt();
   tipBefore_ = sutureState_.x.col(0);
-  tangentBefore_ = tools::needleTipTangent(*suture_, sutureState_.x);
   const suture::SutureStepReport report = sutureSolver_->step(*suture_, sutureState_, grips, world, params);
   tipAfter_ = sutureState_.x.col(0);
   tangentAfter_ = tools::needleTipTangent(*suture_, sutureState_.x);
@@ -282,7 +282,7 @@ void Scene::stepSuture() {
     coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
 }
 
-PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const {
+PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const {
   PierceEvent e;
   e.time = time_;
   e.entry = c.entry;
@@ -298,7 +298,7 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
   const auto& corners = tissue.triangles()[static_cast<std::size_t>(c.face)];
   for (std::size_t k = 0; k < 3; ++k) e.restPoint += c.barycentric[static_cast<Eigen::Index>(k)] * rest.col(corners[k]);
   const Vec3 restNormal = tools::faceNormal(tissue, rest, c.face);
-  e.angleDeg = tools::pierceAngleDeg(tangent, restNormal.isZero(0.0) ? c.normal : restNormal);
+  e.angleDeg = tools::pierceAngleDeg(aimed, restNormal.isZero(0.0) ? c.normal : restNormal);
 
   // which vessel, which surface, which wall, how far from the cut
   const auto in = [&](const TriangleRange& r) { return c.face >= r.begin && c.face < r.end; };
@@ -328,6 +328,13 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
   return e;
 }
 
+double Scene::wallThickness(int face) const {
+  for (const SceneVessel& vessel : def_.vessels)
+    for (const TriangleRange& r : {vessel.outerSurface, vessel.innerSurface, vessel.cutEnd, vessel.clampedEnd})
+      if (face >= r.begin && face < r.end) return vessel.def.wallThickness;
+  return 0.0;
+}
+
 void Scene::applyCrossings() {
   // only a held needle is driven through tissue (a loose one has nothing to push it), and a
   // tip let go or drawn back stops pressing
@@ -352,16 +359,17 @@ void Scene::takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cut
     // an entry the tip cuts dents the wall first, and the crossings behind it wait for the
     // puncture; a tip going back, tail first, follows the channel it cut
     if (c.entry && cutting && indentStiffness_ > 0.0) {
-      indent_ = tools::beginIndentation(c);
+      indent_ = tools::beginIndentation(c, wallThickness(c.face));
       return;
     }
-    // the tangent where the tip crossed, between its directions before and after the step
-    pierceAt(c, ((1.0 - c.t) * tangentBefore_ + c.t * tangentAfter_).normalized());
+    // the needle's tangent where its body passes the crossing (tools/needle.h, Angles)
+    const Vec3 tangent = tools::needleTangentNear(*suture_, sutureState_.x, c.point);
+    pierceAt(c, tangent, tangent);
   }
 }
 
-void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent) {
-  pierces_.push_back(describePierce(c, tangent));
+void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) {
+  pierces_.push_back(describePierce(c, tangent, aimed));
   addEvent(c.entry ? SceneEventKind::PierceEntry : SceneEventKind::PierceExit, -1,
            static_cast<int>(pierces_.size()) - 1, 1);
 
@@ -378,16 +386,19 @@ void Scene::pierceAt(const tools::FaceCrossing& c, const Vec3& tangent) {
 
 void Scene::checkPuncture() {
   const SpringModel& tissue = def_.tissue.model;
-  if (!indent_ || tools::indentationForce(tissue, state_.x, *indent_, tipAfter_, tangentAfter_, indentStiffness_) <
-                      def_.needle->punctureForce)
+  if (!indent_ || !tools::punctured(tissue, state_.x, *indent_, tipAfter_, tangentAfter_, indentStiffness_,
+                                    def_.needle->punctureForce))
     return;
 
-  // through: the pierce is where the face's point is now, under the tip
+  // through: the pierce is where the face's point is now, under the tip; its angle is the
+  // needle's where its body passes the point the tip first touched (the tip has turned on
+  // along its curve since)
   tools::FaceCrossing c = indent_->touch;
   c.point = tools::indentedPoint(tissue, state_.x, *indent_);
   c.normal = tools::faceNormal(tissue, state_.x, c.face);
+  const Vec3 aimed = tools::needleTangentNear(*suture_, sutureState_.x, indent_->touch.point);
   indent_.reset();
-  pierceAt(c, tangentAfter_);
+  pierceAt(c, tangentAfter_, aimed);
   punctured_ = tools::facesAround(tissue, c.face);
 }
 

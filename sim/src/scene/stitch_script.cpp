@@ -64,20 +64,6 @@ std::optional<Pass> pass(const SceneDef& scene, const StitchScriptDef& def) {
   return p;
 }
 
-// needle frame → scene with the tip at ψ on the pass circle (see the header essay)
-Eigen::Isometry3d needleAt(const StitchGeometry& g, double psi) {
-  const double c = std::cos(psi);
-  const double s = std::sin(psi);
-  Eigen::Matrix3d r;
-  r.col(0) = -c * g.eu - s * g.ew;
-  r.col(1) = -s * g.eu + c * g.ew;
-  r.col(2) = r.col(0).cross(r.col(1));
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = r;
-  pose.translation() = g.center + g.radius * (s * g.eu - c * g.ew);
-  return pose;
-}
-
 Eigen::Isometry3d blend(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double f) {
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
   out.linear() = Eigen::Quaterniond(a.linear()).slerp(f, Eigen::Quaterniond(b.linear())).toRotationMatrix();
@@ -110,6 +96,19 @@ class FrameWriter {
 };
 
 }  // namespace
+
+Eigen::Isometry3d needleOnPassCircle(const StitchGeometry& g, double psi) {
+  const double c = std::cos(psi);
+  const double s = std::sin(psi);
+  Eigen::Matrix3d r;
+  r.col(0) = -c * g.eu - s * g.ew;
+  r.col(1) = -s * g.eu + c * g.ew;
+  r.col(2) = r.col(0).cross(r.col(1));
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = r;
+  pose.translation() = g.center + g.radius * (s * g.eu - c * g.ew);
+  return pose;
+}
 
 std::optional<StitchGeometry> stitchGeometry(const SceneDef& scene, const StitchScriptDef& def) {
   const std::optional<Pass> p = pass(scene, def);
@@ -180,7 +179,7 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   }
 
   // 2. carries it to the start of the arc
-  const Eigen::Isometry3d first = needleAt(g, start);
+  const Eigen::Isometry3d first = needleOnPassCircle(g, start);
   for (int k = 1, n = w.steps(0.5); k <= n; ++k) {
     w.hand(Hand::Right, Instrument::NeedleHolder, blend(lying, first, static_cast<double>(k) / n) * holderGrip, 1.0);
     w.emit();
@@ -189,12 +188,12 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   // 3. turns it about C through both ends
   for (int k = 1, n = w.steps(def.passSeconds); k <= n; ++k) {
     const double psi = start + (stop - start) * k / n;
-    w.hand(Hand::Right, Instrument::NeedleHolder, needleAt(g, psi) * holderGrip, 1.0);
+    w.hand(Hand::Right, Instrument::NeedleHolder, needleOnPassCircle(g, psi) * holderGrip, 1.0);
     w.emit();
   }
 
   // 4. the holder lets go; the forceps takes the needle behind its tip
-  const Eigen::Isometry3d last = needleAt(g, stop);
+  const Eigen::Isometry3d last = needleOnPassCircle(g, stop);
   for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
     // opened no further than it takes to let go (a closure just under close_at): a jaw opened
     // wide would swing down into the wall below
@@ -210,10 +209,10 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   const double out = def.pullOutDeg * kDeg;
   for (int k = 1, n = w.steps(1.2); k <= n; ++k) {
     const double psi = stop + (out - stop) * k / n;
-    w.hand(Hand::Left, Instrument::Forceps, needleAt(g, psi) * forcepsGrip, 1.0);
+    w.hand(Hand::Left, Instrument::Forceps, needleOnPassCircle(g, psi) * forcepsGrip, 1.0);
     w.emit();
   }
-  const Eigen::Isometry3d free = needleAt(g, out);
+  const Eigen::Isometry3d free = needleOnPassCircle(g, out);
   for (int k = 1, n = w.steps(1.0); k <= n; ++k) {
     Eigen::Isometry3d pulled = free;
     pulled.translation() += (def.pullMm * k / n) * g.ew;

@@ -26,6 +26,19 @@ Vec3 needleTipTangent(const suture::SutureModel& model, const suture::Points& x)
   return (r * Vec3(-1.0, 0.0, 0.0)).normalized();
 }
 
+Vec3 needleTangentNear(const suture::SutureModel& model, const suture::Points& x, const Vec3& p) {
+  if (model.needleLinks() == 0 || model.def().needleShape == suture::NeedleShape::Straight)
+    return needleTipTangent(model, x);
+  // the rest shape is (R sin θ, R (1 − cos θ), 0) from the tip (θ = 0) to the swage (θ = 3π/4)
+  const double radius = model.def().needleRadius;
+  const Eigen::Matrix3d r = suture::needleRotation(model, x);
+  const Vec3 centre = x.col(0) + r * Vec3(0.0, radius, 0.0);
+  const Vec3 local = r.transpose() * (p - centre);
+  // θ of p's direction from the centre, seen in the needle's plane, clamped to the arc
+  const double theta = std::clamp(std::atan2(local.x(), -local.y()), 0.0, 0.75 * std::numbers::pi);
+  return (r * Vec3(-std::cos(theta), -std::sin(theta), 0.0)).normalized();
+}
+
 double pierceAngleDeg(const Vec3& tangent, const Vec3& normal) {
   const double c = std::min(1.0, std::abs(tangent.normalized().dot(normal.normalized())));
   return std::acos(c) * 180.0 / std::numbers::pi;

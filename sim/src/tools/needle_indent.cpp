@@ -8,9 +8,10 @@ namespace {
 constexpr double kFacePastTip = 1e-3;
 }  // namespace
 
-Indentation beginIndentation(const FaceCrossing& entry) {
+Indentation beginIndentation(const FaceCrossing& entry, double throughDepth) {
   Indentation in;
   in.touch = entry;
+  in.throughDepth = throughDepth;
   // an entry comes from the face's front: the normal already points at the tip's side
   in.side = entry.entry ? entry.normal : Vec3(-entry.normal);
   return in;
@@ -37,6 +38,14 @@ double indentationForce(const SpringModel& tissue, const Points& x, const Indent
   return k * (tip - indentedPoint(tissue, x, in)).dot(travel);
 }
 
+double indentationDepth(const Indentation& in, const Vec3& tip) { return (in.touch.point - tip).dot(in.side); }
+
+bool punctured(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip,
+               const Vec3& travel, double k, double punctureForce) {
+  if (indentationForce(tissue, x, in, tip, travel, k) >= punctureForce) return true;
+  return in.throughDepth > 0.0 && indentationDepth(in, tip) >= in.throughDepth;
+}
+
 bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation& in, const Vec3& tip) {
   // The spring holds the face's point on the tip to within the wall's force over its
   // stiffness (a fraction of a micrometre), on the far side while the tip presses and on the
@@ -44,7 +53,7 @@ bool tipWithdrawn(const SpringModel& tissue, const Points& x, const Indentation&
   // solve stopped at its tolerance. So the tip counts as drawn back once it is back on its
   // own side of where it first touched the face, or once the face is clearly past it (moved
   // by something stronger than the spring).
-  if ((tip - in.touch.point).dot(in.side) > 0.0) return true;
+  if (indentationDepth(in, tip) < 0.0) return true;
   return (tip - indentedPoint(tissue, x, in)).dot(in.side) > kFacePastTip;
 }
 

@@ -29,7 +29,7 @@ SceneDef chain(const std::string& tissue) {
   return std::get<SceneDef>(std::move(load));
 }
 
-std::vector<SceneEvent> eventsOf(const Scene& scene, SceneEventKind kind) {
+std::vector<SceneEvent> tissueLimitEventsOf(const Scene& scene, SceneEventKind kind) {
   std::vector<SceneEvent> out;
   for (const SceneEvent& e : scene.events())
     if (e.kind == kind) out.push_back(e);
@@ -39,14 +39,14 @@ std::vector<SceneEvent> eventsOf(const Scene& scene, SceneEventKind kind) {
 TEST(TissueLimits, AnOverStretchIsReportedOnceWhenItStarts) {
   Scene scene(chain(R"({"overstretch": 0.3})"));
   for (int s = 0; s < 5; ++s) scene.step(InputFrame{});
-  const std::vector<SceneEvent> over = eventsOf(scene, SceneEventKind::TissueOverStretch);
+  const std::vector<SceneEvent> over = tissueLimitEventsOf(scene, SceneEventKind::TissueOverStretch);
   ASSERT_EQ(over.size(), 2u);
   for (int l = 0; l < 2; ++l) {
     EXPECT_EQ(over[static_cast<std::size_t>(l)].index, l);
     EXPECT_EQ(over[static_cast<std::size_t>(l)].count, 500);  // per-mille
     EXPECT_EQ(over[static_cast<std::size_t>(l)].step, 0);
   }
-  EXPECT_TRUE(eventsOf(scene, SceneEventKind::TissueTear).empty());
+  EXPECT_TRUE(tissueLimitEventsOf(scene, SceneEventKind::TissueTear).empty());
   EXPECT_EQ(scene.tissue().aliveLinkCount(), 2);
 }
 
@@ -60,7 +60,7 @@ TEST(TissueLimits, ALinkPastTheTearThresholdIsRemoved) {
   Scene scene(chain(R"({"tear": 0.4})"));
   const StepReport r = scene.step(InputFrame{});
   EXPECT_EQ(r.events, 1);
-  const std::vector<SceneEvent> tears = eventsOf(scene, SceneEventKind::TissueTear);
+  const std::vector<SceneEvent> tears = tissueLimitEventsOf(scene, SceneEventKind::TissueTear);
   ASSERT_EQ(tears.size(), 1u);
   EXPECT_EQ(tears[0].index, 0);
   EXPECT_EQ(tears[0].count, 2);
@@ -136,8 +136,8 @@ DragResult dragCutEdge(const Vec3& drag) {
   const int steps = std::max(1, static_cast<int>(std::ceil(drag.norm() / 0.1)));
   for (int s = 1; s <= steps; ++s) step(start + drag * (static_cast<double>(s) / steps), 1.0);
   for (int s = 0; s < 5; ++s) step(start + drag, 1.0);
-  r.overStretches = static_cast<int>(eventsOf(scene, SceneEventKind::TissueOverStretch).size());
-  r.tears = static_cast<int>(eventsOf(scene, SceneEventKind::TissueTear).size());
+  r.overStretches = static_cast<int>(tissueLimitEventsOf(scene, SceneEventKind::TissueOverStretch).size());
+  r.tears = static_cast<int>(tissueLimitEventsOf(scene, SceneEventKind::TissueTear).size());
   return r;
 }
 
@@ -182,8 +182,8 @@ TEST(TissueLimits, TheShippedStitchLeavesNoLinkPastTheTearStrain) {
     EXPECT_LE(worst, tear) << "step " << scene.steps();
   }
   RecordProperty("largest_stretch", std::to_string(largest));
-  RecordProperty("tears", std::to_string(eventsOf(scene, SceneEventKind::TissueTear).size()));
-  RecordProperty("over_stretches", std::to_string(eventsOf(scene, SceneEventKind::TissueOverStretch).size()));
+  RecordProperty("tears", std::to_string(tissueLimitEventsOf(scene, SceneEventKind::TissueTear).size()));
+  RecordProperty("over_stretches", std::to_string(tissueLimitEventsOf(scene, SceneEventKind::TissueOverStretch).size()));
 }
 
 TEST(TissueLimits, BadContactSettingsAreRejectedByField) {

@@ -39,15 +39,15 @@ FaceCrossing entryAtCentre() {
 }
 
 TEST(NeedleIndent, AnEntryPressesFromTheFrontAndAnExitFromBehind) {
-  EXPECT_TRUE(beginIndentation(entryAtCentre()).side.isApprox(Vec3::UnitZ()));
+  EXPECT_TRUE(beginIndentation(entryAtCentre(), 0.0).side.isApprox(Vec3::UnitZ()));
   FaceCrossing exit = entryAtCentre();
   exit.entry = false;
-  EXPECT_TRUE(beginIndentation(exit).side.isApprox(-Vec3::UnitZ()));
+  EXPECT_TRUE(beginIndentation(exit, 0.0).side.isApprox(-Vec3::UnitZ()));
 }
 
 TEST(NeedleIndent, TheForceIsTheSpringsPullAlongTheTipsTravel) {
   const SpringModel m = twoFacesInAPlane();
-  const Indentation in = beginIndentation(entryAtCentre());
+  const Indentation in = beginIndentation(entryAtCentre(), 0.0);
   Points x = m.restPositions();
   const double k = 1000.0;
   // the tip 0.01 mm below the face's point, travelling down and sideways at 45°
@@ -72,7 +72,7 @@ TEST(NeedleIndent, TheForceIsTheSpringsPullAlongTheTipsTravel) {
 // a face clearly past the tip, or a tip back past the first touch, ends the dent.
 TEST(NeedleIndent, AFaceHeldOnTheTipWithinTheSolvesToleranceIsStillPressed) {
   const SpringModel m = twoFacesInAPlane();
-  const Indentation in = beginIndentation(entryAtCentre());
+  const Indentation in = beginIndentation(entryAtCentre(), 0.1);
   Points x = m.restPositions();
   // the face dented 0.02 mm, its point a hair (1e-9 mm) deeper than the tip
   x.row(2).array() -= 0.02;
@@ -80,6 +80,27 @@ TEST(NeedleIndent, AFaceHeldOnTheTipWithinTheSolvesToleranceIsStillPressed) {
   EXPECT_FALSE(tipWithdrawn(m, x, in, tip));
   // the tip drawn back above where it first touched: it no longer presses
   EXPECT_TRUE(tipWithdrawn(m, x, in, in.touch.point + Vec3(0.0, 0.0, 1e-6)));
+}
+
+TEST(NeedleIndent, AWallCarriedItsThicknessPastTheTouchIsPuncturedWithoutTheForce) {
+  const SpringModel m = twoFacesInAPlane();
+  const Indentation in = beginIndentation(entryAtCentre(), 0.1);
+  Points x = m.restPositions();
+  const double k = 1000.0;
+  const Vec3 down = -Vec3::UnitZ();
+  // the whole face rides on the tip (no dent, no force), 0.09 then 0.1 mm below the touch
+  x.row(2).array() -= 0.09;
+  Vec3 tip = in.touch.point + 0.09 * down;
+  EXPECT_NEAR(indentationDepth(in, tip), 0.09, 1e-12);
+  EXPECT_NEAR(indentationForce(m, x, in, tip, down, k), 0.0, 1e-9);
+  EXPECT_FALSE(punctured(m, x, in, tip, down, k, 400.0));
+  x.row(2).array() -= 0.01;
+  tip = in.touch.point + 0.1 * down;
+  EXPECT_TRUE(punctured(m, x, in, tip, down, k, 400.0));
+  // without a depth the force alone decides: a dent of 0.4 mm at 1000 g/s² is 400 µN
+  const Indentation byForce = beginIndentation(entryAtCentre(), 0.0);
+  EXPECT_FALSE(punctured(m, x, byForce, tip, down, k, 400.0));
+  EXPECT_TRUE(punctured(m, m.restPositions(), byForce, in.touch.point + 0.4 * down, down, k, 400.0));
 }
 
 TEST(NeedleIndent, FacesAroundAFaceShareACornerWithIt) {

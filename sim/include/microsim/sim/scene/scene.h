@@ -17,7 +17,8 @@
 //                 (pierce entry and exit; only while a forceps holds the needle: nothing
 //                 drives a loose needle through a wall; with a puncture force, an entry
 //                 first dents the wall under the tip and pierces only when the tip presses
-//                 hard enough, checked after the tissue solve: tools/needle_indent.h), a
+//                 hard enough or has carried the wall its thickness, checked after the
+//                 tissue solve: tools/needle_indent.h), a
 //                 scalpel's blade against the links; after the tissue solve the trees are
 //                 refit where nodes moved;
 //   tissue        the tissue solver runs with those controls and, where it takes soft
@@ -170,13 +171,17 @@ class Scene {
   void applyCrossings();
   /// `cutting`: the tip moves point first (a tip going back follows its channel: no dent)
   void takeCrossings(const std::vector<tools::FaceCrossing>& hits, bool cutting);
-  void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent);
+  /// `tangent`: the needle's where it passes the hole now (PierceEvent::tangent); `aimed`:
+  /// where it passed the wall as the trainee met it, which the angle is read from
+  void pierceAt(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed);
   void checkPuncture();
+  /// mm: the thickness of the vessel wall `face` belongs to; 0 for other tissue
+  double wallThickness(int face) const;
   void assembleControls();
   void checkStretch(const std::vector<int>& moved);
   SolveReport solveTissue(const SolveBudget& budget, StepReport& report);
   std::vector<std::uint8_t> jawSkip() const;
-  PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent) const;
+  PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const;
   void addEvent(SceneEventKind kind, int hand, int index, int count);
 
   double now() const { return clock_(); }
@@ -194,7 +199,6 @@ class Scene {
   std::unique_ptr<suture::ContactSurface> surface_;
   Vec3 tipBefore_ = Vec3::Zero();
   Vec3 tipAfter_ = Vec3::Zero();
-  Vec3 tangentBefore_ = Vec3::UnitX();
   Vec3 tangentAfter_ = Vec3::UnitX();
   bool needleHeld_ = false;
   SpringControls coupling_;                  ///< the suture's pull by position

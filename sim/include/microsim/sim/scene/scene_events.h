@@ -63,10 +63,13 @@ struct PierceEvent {
                                     ///< dragged wall is judged where the tissue has the hole
   int face = -1;                    ///< tissue triangle
   Vec3 barycentric = Vec3::Zero();  ///< on the face's corners
-  Vec3 tangent = Vec3::Zero();      ///< the needle's forward tangent at the tip (unit)
+  Vec3 tangent = Vec3::Zero();      ///< the needle's forward tangent where it passes `point`
+                                    ///< (unit; at the tip for a wall punctured after a dent)
   Vec3 normal = Vec3::Zero();       ///< the face normal now, out of the wall material (unit)
-  double angleDeg = 0.0;            ///< acos |tangent·n₀|, n₀ the undeformed face's normal:
-                                    ///< 0 = perpendicular to the wall
+  double angleDeg = 0.0;            ///< acos |τ·n₀|: τ the needle arc's tangent where its body
+                                    ///< passed the wall (a dented wall: where the tip first
+                                    ///< touched it, tools/needle.h), n₀ the undeformed face's
+                                    ///< normal; 0 = perpendicular to the wall
   int vessel = -1;                  ///< index into SceneDef::vessels, -1 for other tissue
   int end = -1;                     ///< 0 or 1 for the ends of a severed vessel, else -1
   VesselSurface surface = VesselSurface::NotAVessel;

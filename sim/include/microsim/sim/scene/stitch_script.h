@@ -64,6 +64,10 @@ struct StitchGeometry {
 };
 std::optional<StitchGeometry> stitchGeometry(const SceneDef& scene, const StitchScriptDef& def = {});
 
+/// The needle's pose (needle frame → scene) with its tip at ψ (radians) on the pass circle of
+/// `g`, its body behind the tip along the circle (see the header essay).
+Eigen::Isometry3d needleOnPassCircle(const StitchGeometry& g, double psi);
+
 /// The four pierces a perfect pass makes, in order (entry 0, exit 0, entry 1, exit 1).
 std::vector<ExpectedPierce> stitchPierces(const SceneDef& scene, const StitchScriptDef& def = {});
 

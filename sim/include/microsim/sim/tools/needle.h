@@ -23,9 +23,15 @@
 //
 // Angles. The needle's tangent at the tip, τ, is the direction the tip travels along the
 // needle's shape (for the curved needle, the rest-shape tangent at node 0 rotated by the
-// needle's current rotation; for a straight one the tip link). The pierce angle is the angle
-// between τ and the face normal's line, acos |τ·n| in degrees: 0° is perpendicular to the
-// wall (the ideal bite), 90° is grazing.
+// needle's current rotation; for a straight one the tip link). A pierce's angle is taken where
+// the needle's body passes through the hole, not at the tip: the tangent of the needle's arc
+// at its point nearest the hole (the circle through the needle's nodes, R the needle radius,
+// centre at the tip + R·r̂ with r̂ the rest shape's inward normal at the tip, turned like the
+// needle; the point is clamped to the arc, tip to swage). Where the tip has gone on past the
+// hole (a wall dented before its puncture, the tip turning along its curve meanwhile) the tip's
+// own tangent would lean by the angle turned since the touch (5–8° at lesson 2's marks). The
+// pierce angle is the angle between that tangent and the face normal's line, acos |τ·n| in
+// degrees: 0° is perpendicular to the wall (the ideal bite), 90° is grazing.
 //
 // Units: millimetres, degrees.
 
@@ -54,6 +60,10 @@ Vec3 faceNormal(const SpringModel& tissue, const Points& x, int face);
 
 /// The needle's forward tangent at its tip (unit): see the header essay.
 Vec3 needleTipTangent(const suture::SutureModel& model, const suture::Points& x);
+
+/// The needle's forward tangent (unit, towards the tip) at the point of its arc nearest p:
+/// see the header essay (the tip link's direction for a straight needle).
+Vec3 needleTangentNear(const suture::SutureModel& model, const suture::Points& x, const Vec3& p);
 
 /// Angle (degrees) between a direction and a surface normal's line: acos |τ·n|.
 double pierceAngleDeg(const Vec3& tangent, const Vec3& normal);
