@@ -1,0 +1,193 @@
+// suture's knot rows (issue 19, item 8): what reading the knot costs a step, and a step of the
+// suture solve with a knot pulled tight, each beside its goal and with its accuracy.
+//
+// Recognition. A surgeon's knot (a left double throw, then a right single: knot_geometry.h's
+// analytic curves, scaled to a quarter) resampled into 60, 200 and 2000 equal links. Steady:
+// the knot tracker (knot_tracker.h) reads the thread every step while the thread moves a
+// little each step (a rigid drift of 0.02 mm a step and a slow turn, above the tracker's move
+// tolerance, so every step is a reading from the last clear picture's direction). Search: the
+// full search over every direction (recogniseKnot without a hint), what the tracker pays when
+// the picture it had stops being clear. Accuracy: the reading is a surgeon's knot of two
+// throws on every step measured.
+//
+// Tight knot. A double throw round a stitch (knot_geometry.h's stitchTwist: two turns of the
+// strands about each other above two pierces), resampled into 200 links, its two pierces held
+// as the suture's pierces, both ends gripped and pulled outwards 0.01 mm a step until the
+// thread is taut, then held: the direct solver's step time over the held steps, and the largest
+// link stretch over the whole pull. The knot is read on each step: its reading (a single throw
+// of two wraps) is counted right or wrong as above.
+#include "knot_bench.h"
+
+#include "bench_clock.h"
+#include "knot_geometry.h"
+
+#include "microsim/sim/suture/knot_tracker.h"
+#include "microsim/sim/suture/suture_solver.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <string>
+
+namespace microsim::bench {
+
+using namespace microsim::sim::suture;
+
+namespace {
+
+constexpr double kRecognitionGoalUs = 20.0;  // µs per step at 200 links
+constexpr double kTightStepGoalUs = 200.0;   // µs per suture step, knot pulled tight, 200 links
+
+bool isSurgeonsOfTwo(const KnotReading& r) { return r.type == KnotType::Surgeons && r.throws.size() == 2; }
+
+bool isDoubleThrow(const KnotReading& r) {
+  return r.type == KnotType::SingleThrow && r.throws.size() == 1 && r.throws[0].wraps == 2;
+}
+
+Points surgeonsKnot(int links) {
+  const knot_test::ThreadBuilder tied = knot_test::throwsInARow({{2, false}, {1, true}});
+  return knot_test::evenlySpaced(tied.points(), 0.25, links);
+}
+
+struct RecognitionMeasure {
+  double steadyUs = 0.0;
+  double searchUs = 0.0;
+  int right = 0;
+  int steps = 0;
+  int searches = 0;  // of the steady steps, those that searched every direction
+};
+
+RecognitionMeasure measureRecognition(int links, int steps) {
+  const Points knot = surgeonsKnot(links);
+  RecognitionMeasure m;
+  KnotTracker tracker;
+  double steady = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    // a rigid drift and turn: every node moves more than the move tolerance
+    const Eigen::AngleAxisd turn(0.002 * k, Vec3::UnitZ());
+    const Points x = ((turn.toRotationMatrix() * knot).colwise() + Vec3(0.02 * k, 0.0, 0.0)).eval();
+    const double start = cpuSeconds();
+    tracker.update(k, x, {}, {});
+    steady += cpuSeconds() - start;
+    // the tracker confirms a reading on its second step
+    if (k >= 1) {
+      ++m.steps;
+      m.right += isSurgeonsOfTwo(tracker.reading()) ? 1 : 0;
+    }
+  }
+  m.searches = tracker.searches();
+  m.steadyUs = 1e6 * steady / steps;
+
+  const int searches = std::max(3, steps / 10);
+  double search = 0.0;
+  for (int k = 0; k < searches; ++k) {
+    const double start = cpuSeconds();
+    const KnotReading r = recogniseKnot(knot, {});
+    search += cpuSeconds() - start;
+    ++m.steps;
+    m.right += isSurgeonsOfTwo(r) ? 1 : 0;
+  }
+  m.searchUs = 1e6 * search / searches;
+  return m;
+}
+
+struct TightMeasure {
+  double stepUs = 0.0;      // mean over the held steps
+  double maxStretch = 0.0;  // over the whole pull
+  int right = 0;
+  int steps = 0;
+  int breaks = 0;
+};
+
+TightMeasure measureTightKnot(int links, int pullSteps, int heldSteps) {
+  // the double throw at the stitch, in equal links, its pierces where the builder put them
+  const knot_test::ThreadBuilder tied = knot_test::stitchTwist(2.0, false);
+  const Points shape = tied.points();
+  std::vector<double> arc(static_cast<std::size_t>(shape.cols()), 0.0);
+  for (Eigen::Index i = 1; i < shape.cols(); ++i)
+    arc[static_cast<std::size_t>(i)] = arc[static_cast<std::size_t>(i - 1)] + (shape.col(i) - shape.col(i - 1)).norm();
+  const Points x0 = knot_test::evenlySpaced(shape, 1.0, links);
+
+  SutureDef def;
+  def.links = links;
+  def.needleLinks = 0;
+  def.length = knot_test::polylineLength(x0);
+  const SutureModel model(def);
+  SutureState state = SutureState::laidOut(model);
+  state.x = x0;
+  state.xPrev = x0;
+  std::vector<int> anchors;
+  for (const int a : tied.anchors()) {
+    const int node = static_cast<int>(std::lround(arc[static_cast<std::size_t>(a)] / arc.back() * links));
+    anchors.push_back(node);
+    Pierce p;
+    p.face = 0;
+    p.node = node;
+    p.point = x0.col(node);
+    state.pierces.push_back(p);
+  }
+
+  auto solver = makeSutureSolver("direct");
+  const SutureStepParams params;
+  const SutureWorld world;
+  KnotTracker tracker;
+  const Vec3 out0 = (x0.col(0) - x0.col(links / 2)).normalized();
+  const Vec3 out1 = (x0.col(links) - x0.col(links / 2)).normalized();
+  TightMeasure m;
+  double held = 0.0;
+  for (int k = 0; k < pullSteps + heldSteps; ++k) {
+    const double pull = 0.01 * std::min(k, pullSteps);
+    const Grip grips[2] = {{0, x0.col(0) + pull * out0}, {links, x0.col(links) + pull * out1}};
+    const double start = cpuSeconds();
+    const SutureStepReport r = solver->step(model, state, grips, world, params);
+    if (k >= pullSteps) held += cpuSeconds() - start;
+    m.maxStretch = std::max(m.maxStretch, r.maxStretch);
+    for (const SutureEvent& e : r.events) m.breaks += e.kind == SutureEventKind::Break ? 1 : 0;
+    tracker.update(k, state.x, anchors, linkStretches(model, state));
+    if (k >= 1) {
+      ++m.steps;
+      m.right += isDoubleThrow(tracker.reading()) ? 1 : 0;
+    }
+  }
+  m.stepUs = 1e6 * held / std::max(1, heldSteps);
+  return m;
+}
+
+BenchRow knotRow(const std::string& caseName, const std::string& metric, double value, const char* unit,
+                 std::optional<double> goal = std::nullopt) {
+  BenchRow r{"suture", caseName, metric, value, unit, std::nullopt, std::nullopt, std::nullopt};
+  if (goal) r.ratio = value / *goal;
+  return r;
+}
+
+}  // namespace
+
+void appendKnotRows(BenchReport& report, const BenchOptions& options, BenchProgress& progress) {
+  const std::vector<int> sizes = options.quick ? std::vector<int>{60, 200} : std::vector<int>{60, 200, 2000};
+  const int steps = options.quick ? 20 : 200;
+  for (const int n : sizes) {
+    const std::string name = "knot recognition, surgeon's knot, " + std::to_string(n) + " links";
+    progress.next(name);
+    const RecognitionMeasure m = measureRecognition(n, steps);
+    const std::optional<double> goal = n == 200 ? std::optional<double>(kRecognitionGoalUs) : std::nullopt;
+    const std::string goalText = n == 200 ? " (goal <= 20 us; ratio = ours / goal)" : "";
+    report.rows.push_back(knotRow(name, "steady step, thread moving" + goalText, m.steadyUs, "us", goal));
+    report.rows.push_back(knotRow(name, "full search, every direction", m.searchUs, "us"));
+    report.rows.push_back(
+        knotRow(name, "steady steps that searched", static_cast<double>(m.searches), "steps"));
+    report.rows.push_back(knotRow(name, "read right (surgeon's, 2 throws)",
+                                  100.0 * m.right / std::max(1, m.steps), "% of steps"));
+  }
+
+  const std::string tight = "knot pulled tight, double throw at a stitch, 200 links [direct]";
+  progress.next(tight);
+  const TightMeasure t = measureTightKnot(200, options.quick ? 40 : 150, options.quick ? 20 : 200);
+  report.rows.push_back(knotRow(tight, "suture step, held tight (goal <= 200 us; ratio = ours / goal)", t.stepUs,
+                                "us", kTightStepGoalUs));
+  report.rows.push_back(knotRow(tight, "max stretch while tightening", t.maxStretch, "relative"));
+  report.rows.push_back(knotRow(tight, "breaks", static_cast<double>(t.breaks), "events"));
+  report.rows.push_back(knotRow(tight, "read right (one throw, 2 wraps)", 100.0 * t.right / std::max(1, t.steps),
+                                "% of steps"));
+}
+
+}  // namespace microsim::bench
