@@ -1,6 +1,7 @@
 #pragma once
 // The suture benchmark's knot rows (knot_bench.cpp): recognition per step and a suture step
-// with a knot pulled tight, each beside its goal and with how often the knot was read right.
+// with a double throw drawn until the thread is taut, each beside its goal and with how often
+// the knot was read right.
 
 #include "bench_report.h"
 
