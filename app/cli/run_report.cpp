@@ -102,7 +102,8 @@ const char* knotTypeKey(sim::suture::KnotType type) {
 }
 
 nlohmann::json knotJson(const sim::SceneEvent& e) {
-  nlohmann::json j = {{"type", knotTypeKey(e.knot.type)}, {"throws", e.count}, {"tension_uN", e.value}};
+  nlohmann::json j = {
+      {"type", knotTypeKey(e.knot.type)}, {"throws", e.count}, {"tension_uN", e.value}};
   if (e.kind == sim::SceneEventKind::ThrowFormed) {
     j["throw"] = e.index;
     j["handedness"] = e.knot.handedness == sim::suture::Handedness::Right ? "right" : "left";

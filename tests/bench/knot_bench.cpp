@@ -1,6 +1,6 @@
 // suture's knot rows (issue 19, item 8): what reading the knot costs a step, and a step of the
-// suture solve with a double throw drawn until the thread is taut (the goal is for a knot pulled tight),
-// each beside its goal and with its accuracy.
+// suture solve with a double throw drawn until the thread is taut (the goal is for a knot pulled
+// tight), each beside its goal and with its accuracy.
 //
 // Recognition. A surgeon's knot (a left double throw, then a right single: knot_geometry.h's
 // analytic curves, scaled to a quarter) resampled into 60, 200 and 2000 equal links. Steady:
@@ -22,8 +22,8 @@
 // locks a throw yet (issue 19, item 3) and the ends turn freely in the grips, so the strands
 // untwist as they are drawn (two wraps, then one, then none, before the thread is taut): the
 // rows say so through how often the double throw was read and the tightened events, and the
-// held step is that of a taut thread whose knot has come undone. The knot is read on each step: its reading (a single throw
-// of two wraps) is counted right or wrong as above.
+// held step is that of a taut thread whose knot has come undone. The knot is read on each step: its
+// reading (a single throw of two wraps) is counted right or wrong as above.
 #include "knot_bench.h"
 
 #include "bench_clock.h"
@@ -49,7 +49,9 @@ namespace {
 constexpr double kRecognitionGoalUs = 20.0;  // µs per step at 200 links
 constexpr double kTightStepGoalUs = 200.0;   // µs per suture step, knot pulled tight, 200 links
 
-bool isSurgeonsOfTwo(const KnotReading& r) { return r.type == KnotType::Surgeons && r.throws.size() == 2; }
+bool isSurgeonsOfTwo(const KnotReading& r) {
+  return r.type == KnotType::Surgeons && r.throws.size() == 2;
+}
 
 bool isDoubleThrow(const KnotReading& r) {
   return r.type == KnotType::SingleThrow && r.throws.size() == 1 && r.throws[0].wraps == 2;
@@ -125,7 +127,8 @@ TightMeasure measureTightKnot(int links, int maxPullSteps, int heldSteps) {
   const Points shape = tied.points();
   std::vector<double> arc(static_cast<std::size_t>(shape.cols()), 0.0);
   for (Eigen::Index i = 1; i < shape.cols(); ++i)
-    arc[static_cast<std::size_t>(i)] = arc[static_cast<std::size_t>(i - 1)] + (shape.col(i) - shape.col(i - 1)).norm();
+    arc[static_cast<std::size_t>(i)] =
+        arc[static_cast<std::size_t>(i - 1)] + (shape.col(i) - shape.col(i - 1)).norm();
   const Points x0 = knot_test::evenlySpaced(shape, 1.0, links);
 
   SutureDef def;
@@ -138,7 +141,8 @@ TightMeasure measureTightKnot(int links, int maxPullSteps, int heldSteps) {
   state.xPrev = x0;
   std::vector<int> anchors;
   for (const int a : tied.anchors()) {
-    const auto node = static_cast<int>(std::lround(arc[static_cast<std::size_t>(a)] / arc.back() * links));
+    const auto node =
+        static_cast<int>(std::lround(arc[static_cast<std::size_t>(a)] / arc.back() * links));
     anchors.push_back(node);
     Pierce p;
     p.face = 0;
@@ -160,7 +164,8 @@ TightMeasure measureTightKnot(int links, int maxPullSteps, int heldSteps) {
   // drawn 0.01 mm a step each end until the thread is taut, then held there
   for (int k = 0; heldSoFar < heldSteps && k < maxPullSteps + heldSteps; ++k) {
     if (!m.taut) m.pulledMm = 0.01 * k;
-    const Grip grips[2] = {{0, x0.col(0) + m.pulledMm * out0}, {links, x0.col(links) + m.pulledMm * out1}};
+    const Grip grips[2] = {{0, x0.col(0) + m.pulledMm * out0},
+                           {links, x0.col(links) + m.pulledMm * out1}};
     const double start = cpuSeconds();
     const SutureStepReport r = solver->step(model, state, grips, world, params);
     if (m.taut) {
@@ -182,8 +187,8 @@ TightMeasure measureTightKnot(int links, int maxPullSteps, int heldSteps) {
   return m;
 }
 
-BenchRow knotRow(const std::string& caseName, const std::string& metric, double value, const char* unit,
-                 std::optional<double> goal = std::nullopt) {
+BenchRow knotRow(const std::string& caseName, const std::string& metric, double value,
+                 const char* unit, std::optional<double> goal = std::nullopt) {
   BenchRow r{"suture", caseName, metric, value, unit, std::nullopt, std::nullopt, std::nullopt};
   if (goal) r.ratio = value / *goal;
   return r;
@@ -192,33 +197,41 @@ BenchRow knotRow(const std::string& caseName, const std::string& metric, double 
 }  // namespace
 
 void appendKnotRows(BenchReport& report, const BenchOptions& options, BenchProgress& progress) {
-  const std::vector<int> sizes = options.quick ? std::vector<int>{60, 200} : std::vector<int>{60, 200, 2000};
+  const std::vector<int> sizes =
+      options.quick ? std::vector<int>{60, 200} : std::vector<int>{60, 200, 2000};
   const int steps = options.quick ? 20 : 200;
   for (const int n : sizes) {
     const std::string name = "knot recognition, surgeon's knot, " + std::to_string(n) + " links";
     progress.next(name);
     const RecognitionMeasure m = measureRecognition(n, steps);
-    const std::optional<double> goal = n == 200 ? std::optional<double>(kRecognitionGoalUs) : std::nullopt;
+    const std::optional<double> goal =
+        n == 200 ? std::optional<double>(kRecognitionGoalUs) : std::nullopt;
     const std::string goalText = n == 200 ? " (goal <= 20 us; ratio = ours / goal)" : "";
-    report.rows.push_back(knotRow(name, "step from the last picture, thread moving" + goalText, m.steadyUs, "us", goal));
+    report.rows.push_back(knotRow(name, "step from the last picture, thread moving" + goalText,
+                                  m.steadyUs, "us", goal));
     report.rows.push_back(knotRow(name, "mean step, searches included", m.meanUs, "us"));
     report.rows.push_back(knotRow(name, "full search, every direction", m.searchUs, "us"));
-    report.rows.push_back(knotRow(name, "steps that searched", static_cast<double>(m.searches), "steps"));
+    report.rows.push_back(
+        knotRow(name, "steps that searched", static_cast<double>(m.searches), "steps"));
     report.rows.push_back(knotRow(name, "read right (surgeon's, 2 throws)",
                                   100.0 * m.right / std::max(1, m.steps), "% of steps"));
   }
 
   const std::string tight = "double throw at a stitch drawn until taut, 200 links [direct]";
   progress.next(tight);
-  const TightMeasure t = measureTightKnot(200, options.quick ? 300 : 1000, options.quick ? 20 : 200);
-  report.rows.push_back(knotRow(tight, "suture step, held taut (goal with a knot pulled tight <= 200 us; ratio = ours / goal)", t.stepUs,
-                                "us", kTightStepGoalUs));
+  const TightMeasure t =
+      measureTightKnot(200, options.quick ? 300 : 1000, options.quick ? 20 : 200);
+  report.rows.push_back(knotRow(
+      tight,
+      "suture step, held taut (goal with a knot pulled tight <= 200 us; ratio = ours / goal)",
+      t.stepUs, "us", kTightStepGoalUs));
   report.rows.push_back(knotRow(tight, "each end drawn until taut", t.pulledMm, "mm"));
   report.rows.push_back(knotRow(tight, "max stretch while tightening", t.maxStretch, "relative"));
-  report.rows.push_back(knotRow(tight, "knot tightened events", static_cast<double>(t.tightened), "events"));
+  report.rows.push_back(
+      knotRow(tight, "knot tightened events", static_cast<double>(t.tightened), "events"));
   report.rows.push_back(knotRow(tight, "breaks", static_cast<double>(t.breaks), "events"));
-  report.rows.push_back(knotRow(tight, "read right (one throw, 2 wraps)", 100.0 * t.right / std::max(1, t.steps),
-                                "% of steps"));
+  report.rows.push_back(knotRow(tight, "read right (one throw, 2 wraps)",
+                                100.0 * t.right / std::max(1, t.steps), "% of steps"));
 }
 
 }  // namespace microsim::bench

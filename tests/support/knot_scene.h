@@ -25,7 +25,8 @@ inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sour
   if (!std::holds_alternative<sim::SceneDef>(load)) return std::nullopt;
   sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
   namespace kt = sim::suture::knot_test;
-  sim::Points x = kt::evenlySpaced(kt::throwsInARow({{2, false}, {1, true}}).points(), 0.25, kKnotSceneLinks);
+  sim::Points x =
+      kt::evenlySpaced(kt::throwsInARow({{2, false}, {1, true}}).points(), 0.25, kKnotSceneLinks);
   x.colwise() += sim::Vec3(0.0, 0.0, 12.0) - x.col(0);
   sim::NeedleDef& needle = *def.needle;
   needle.suture.needleLinks = 0;
@@ -37,7 +38,8 @@ inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sour
 
 /// A forceps whose jaws lie along the thread's end at node `end` (`inward` = +1 when the
 /// thread runs on from it to higher nodes, −1 to lower), its tip just beyond the end.
-inline sim::HandInput forcepsOnThreadEnd(const sim::Points& x, int end, int inward, double closure) {
+inline sim::HandInput forcepsOnThreadEnd(const sim::Points& x, int end, int inward,
+                                         double closure) {
   const sim::Vec3 along = (x.col(end) - x.col(end + inward * 6)).normalized();
   sim::HandInput h;
   h.tracked = true;

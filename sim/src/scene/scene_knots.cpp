@@ -10,9 +10,12 @@ namespace {
 
 SceneEventKind sceneEventKindOf(suture::KnotEventKind kind) {
   switch (kind) {
-    case suture::KnotEventKind::ThrowFormed: return SceneEventKind::ThrowFormed;
-    case suture::KnotEventKind::KnotTightened: return SceneEventKind::KnotTightened;
-    case suture::KnotEventKind::KnotSlipped: return SceneEventKind::KnotSlipped;
+    case suture::KnotEventKind::ThrowFormed:
+      return SceneEventKind::ThrowFormed;
+    case suture::KnotEventKind::KnotTightened:
+      return SceneEventKind::KnotTightened;
+    case suture::KnotEventKind::KnotSlipped:
+      return SceneEventKind::KnotSlipped;
   }
   return SceneEventKind::ThrowFormed;
 }
@@ -24,9 +27,9 @@ suture::Piece knotPiece(const suture::SutureState& s) {
   suture::Piece best = pieces.front();
   int bestPierces = -1;
   for (const suture::Piece& piece : pieces) {
-    const auto pierced = static_cast<int>(std::count_if(s.pierces.begin(), s.pierces.end(), [&](const suture::Pierce& p) {
-      return p.node >= piece.first && p.node <= piece.last;
-    }));
+    const auto pierced = static_cast<int>(std::count_if(
+        s.pierces.begin(), s.pierces.end(),
+        [&](const suture::Pierce& p) { return p.node >= piece.first && p.node <= piece.last; }));
     const bool longer = piece.last - piece.first > best.last - best.first;
     if (pierced > bestPierces || (pierced == bestPierces && longer)) {
       best = piece;
@@ -60,7 +63,8 @@ void Scene::readKnots() {
   // the whole chain is read in place; a piece of it is copied
   const bool whole = piece.first == 0 && piece.last == model.nodeCount() - 1;
   if (!whole) knotNodes_ = s.x.middleCols(piece.first, piece.last - piece.first + 1);
-  const std::span<const suture::KnotEvent> found = knots_->update(steps_, whole ? s.x : knotNodes_, knotAnchors_, knotStretch_);
+  const std::span<const suture::KnotEvent> found =
+      knots_->update(steps_, whole ? s.x : knotNodes_, knotAnchors_, knotStretch_);
 
   for (const suture::KnotEvent& k : found) {
     const SceneEventKind kind = sceneEventKindOf(k.kind);

@@ -26,12 +26,14 @@ struct KnotRun {
 };
 
 KnotRun reportOfSurgeonsKnot(int frames) {
-  const std::optional<sim::SceneDef> def = microsim::testing::surgeonsKnotSceneDef(microsim::testing::kSourceRoot.toStdString());
+  const std::optional<sim::SceneDef> def =
+      microsim::testing::surgeonsKnotSceneDef(microsim::testing::kSourceRoot.toStdString());
   EXPECT_TRUE(def);
   sim::Scene scene(*def);
   const sim::Points start = scene.sutureState()->x;
   cli::StepTimeLog times;
-  for (int k = 0; k < frames; ++k) times.add(scene.step(microsim::testing::knotPullFrame(start, k)).times);
+  for (int k = 0; k < frames; ++k)
+    times.add(scene.step(microsim::testing::knotPullFrame(start, k)).times);
   KnotRun run;
   QTextStream out(&run.text);
   cli::printRunReport(out, scene, QStringLiteral("knot.json"), times);

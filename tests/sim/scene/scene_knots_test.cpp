@@ -2,7 +2,8 @@
 // finds as scene events. A thread laid in a surgeon's knot (the analytic geometry the recogniser
 // is tested on, knot_geometry.h) above the shipped vessel, both ends taken by the forceps and
 // pulled apart, reports its two throws as it is first read; the thread runs through them without
-// coming taut, so nothing is tightened; the shipped stitch (two passes through two walls, no knot tied) reports no knot at all.
+// coming taut, so nothing is tightened; the shipped stitch (two passes through two walls, no knot
+// tied) reports no knot at all.
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 
