@@ -1034,6 +1034,58 @@
         <source>the needle keeps %1 mm of thread, too short to tie</source>
         <translation>der Nadel bleiben %1 mm Faden, zu kurz zum Knoten</translation>
     </message>
+    <message>
+        <source>no knot</source>
+        <translation>kein Knoten</translation>
+    </message>
+    <message>
+        <source>a single throw</source>
+        <translation>ein einfacher Wurf</translation>
+    </message>
+    <message>
+        <source>a square knot</source>
+        <translation>ein Kreuzknoten</translation>
+    </message>
+    <message>
+        <source>a granny knot</source>
+        <translation>ein Altweiberknoten</translation>
+    </message>
+    <message>
+        <source>a surgeon's knot</source>
+        <translation>ein chirurgischer Knoten</translation>
+    </message>
+    <message>
+        <source>a slip knot</source>
+        <translation>ein Slipknoten</translation>
+    </message>
+    <message>
+        <source>an unknown knot</source>
+        <translation>ein unbekannter Knoten</translation>
+    </message>
+    <message>
+        <source>right-handed</source>
+        <translation>rechtshändig</translation>
+    </message>
+    <message>
+        <source>left-handed</source>
+        <translation>linkshändig</translation>
+    </message>
+    <message numerus="yes">
+        <source>throw %1 formed: %2, %n wrap(s); the knot reads %3</source>
+        <translation><numerusform>Wurf %1 gebildet: %2, %n Windung; der Knoten ist %3</numerusform><numerusform>Wurf %1 gebildet: %2, %n Windungen; der Knoten ist %3</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 pulled tight: %n throw(s), tension %2 µN</source>
+        <translation><numerusform>%1 festgezogen: %n Wurf, Spannung %2 µN</numerusform><numerusform>%1 festgezogen: %n Würfe, Spannung %2 µN</numerusform></translation>
+    </message>
+    <message>
+        <source>the knot slips: it ran %1 mm along the thread under %2 µN</source>
+        <translation>der Knoten rutscht: er lief %1 mm den Faden entlang bei %2 µN</translation>
+    </message>
+    <message numerus="yes">
+        <source>the knot slips: %n throw(s) left, it reads %1</source>
+        <translation><numerusform>der Knoten rutscht: %n Wurf bleibt, er ist %1</numerusform><numerusform>der Knoten rutscht: %n Würfe bleiben, er ist %1</numerusform></translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2513,6 +2565,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The needle was left too little thread to tie</source>
         <translation>Der Nadel blieb zu wenig Faden zum Knoten</translation>
+    </message>
+    <message>
+        <source>The knot slipped</source>
+        <translation>Der Knoten ist gerutscht</translation>
     </message>
 </context>
 <context>

@@ -1034,6 +1034,58 @@
         <source>the needle keeps %1 mm of thread, too short to tie</source>
         <translation>a la aguja le quedan %1 mm de hilo, demasiado corto para anudar</translation>
     </message>
+    <message>
+        <source>no knot</source>
+        <translation>ningún nudo</translation>
+    </message>
+    <message>
+        <source>a single throw</source>
+        <translation>una lazada simple</translation>
+    </message>
+    <message>
+        <source>a square knot</source>
+        <translation>un nudo llano</translation>
+    </message>
+    <message>
+        <source>a granny knot</source>
+        <translation>un nudo de la abuela</translation>
+    </message>
+    <message>
+        <source>a surgeon's knot</source>
+        <translation>un nudo de cirujano</translation>
+    </message>
+    <message>
+        <source>a slip knot</source>
+        <translation>un nudo corredizo</translation>
+    </message>
+    <message>
+        <source>an unknown knot</source>
+        <translation>un nudo desconocido</translation>
+    </message>
+    <message>
+        <source>right-handed</source>
+        <translation>a derechas</translation>
+    </message>
+    <message>
+        <source>left-handed</source>
+        <translation>a izquierdas</translation>
+    </message>
+    <message numerus="yes">
+        <source>throw %1 formed: %2, %n wrap(s); the knot reads %3</source>
+        <translation><numerusform>lazada %1 formada: %2, %n vuelta; el nudo es %3</numerusform><numerusform>lazada %1 formada: %2, %n vueltas; el nudo es %3</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 pulled tight: %n throw(s), tension %2 µN</source>
+        <translation><numerusform>%1 apretado: %n lazada, tensión %2 µN</numerusform><numerusform>%1 apretado: %n lazadas, tensión %2 µN</numerusform></translation>
+    </message>
+    <message>
+        <source>the knot slips: it ran %1 mm along the thread under %2 µN</source>
+        <translation>el nudo se desliza: recorrió %1 mm a lo largo del hilo con %2 µN</translation>
+    </message>
+    <message numerus="yes">
+        <source>the knot slips: %n throw(s) left, it reads %1</source>
+        <translation><numerusform>el nudo se desliza: queda %n lazada, es %1</numerusform><numerusform>el nudo se desliza: quedan %n lazadas, es %1</numerusform></translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2513,6 +2565,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The needle was left too little thread to tie</source>
         <translation>A la aguja le quedó muy poco hilo para anudar</translation>
+    </message>
+    <message>
+        <source>The knot slipped</source>
+        <translation>El nudo se deslizó</translation>
     </message>
 </context>
 <context>

@@ -44,8 +44,76 @@ const char* eventKey(sim::SceneEventKind k) {
       return "thread-cut";
     case K::ThreadTooShort:
       return "thread-too-short";
+    case K::ThrowFormed:
+      return "throw-formed";
+    case K::KnotTightened:
+      return "knot-tightened";
+    case K::KnotSlipped:
+      return "knot-slipped";
   }
   return "";
+}
+
+QString knotTypeText(sim::suture::KnotType type) {
+  using T = sim::suture::KnotType;
+  switch (type) {
+    case T::None:
+      return Cli::tr("no knot");
+    case T::SingleThrow:
+      return Cli::tr("a single throw");
+    case T::Square:
+      return Cli::tr("a square knot");
+    case T::Granny:
+      return Cli::tr("a granny knot");
+    case T::Surgeons:
+      return Cli::tr("a surgeon's knot");
+    case T::SlipKnot:
+      return Cli::tr("a slip knot");
+    case T::Unknown:
+      return Cli::tr("an unknown knot");
+  }
+  return {};
+}
+
+QString handednessText(sim::suture::Handedness h) {
+  return h == sim::suture::Handedness::Right ? Cli::tr("right-handed") : Cli::tr("left-handed");
+}
+
+// the knot's fields for JSON: names for programs, not translated
+const char* knotTypeKey(sim::suture::KnotType type) {
+  using T = sim::suture::KnotType;
+  switch (type) {
+    case T::None:
+      return "none";
+    case T::SingleThrow:
+      return "single-throw";
+    case T::Square:
+      return "square";
+    case T::Granny:
+      return "granny";
+    case T::Surgeons:
+      return "surgeons";
+    case T::SlipKnot:
+      return "slip-knot";
+    case T::Unknown:
+      return "unknown";
+  }
+  return "";
+}
+
+nlohmann::json knotJson(const sim::SceneEvent& e) {
+  nlohmann::json j = {
+      {"type", knotTypeKey(e.knot.type)}, {"throws", e.count}, {"tension_uN", e.value}};
+  if (e.kind == sim::SceneEventKind::ThrowFormed) {
+    j["throw"] = e.index;
+    j["handedness"] = e.knot.handedness == sim::suture::Handedness::Right ? "right" : "left";
+    j["wraps"] = e.knot.wraps;
+  }
+  if (e.kind == sim::SceneEventKind::KnotSlipped) {
+    j["cause"] = e.knot.cause == sim::suture::KnotSlipCause::Sliding ? "sliding" : "structure-lost";
+    j["slide_mm"] = e.knot.slide;
+  }
+  return j;
 }
 
 QString eventText(const sim::SceneEvent& e) {
@@ -84,8 +152,28 @@ QString eventText(const sim::SceneEvent& e) {
                             : Cli::tr("scissors cut the thread");
     case K::ThreadTooShort:
       return Cli::tr("the needle keeps %1 mm of thread, too short to tie").arg(e.value, 0, 'f', 2);
+    case K::ThrowFormed:
+      return Cli::tr("throw %1 formed: %2, %n wrap(s); the knot reads %3", nullptr, e.knot.wraps)
+          .arg(e.index + 1)
+          .arg(handednessText(e.knot.handedness), knotTypeText(e.knot.type));
+    case K::KnotTightened:
+      return Cli::tr("%1 pulled tight: %n throw(s), tension %2 µN", nullptr, e.count)
+          .arg(knotTypeText(e.knot.type))
+          .arg(e.value, 0, 'f', 1);
+    case K::KnotSlipped:
+      return e.knot.cause == sim::suture::KnotSlipCause::Sliding
+                 ? Cli::tr("the knot slips: it ran %1 mm along the thread under %2 µN")
+                       .arg(e.knot.slide, 0, 'f', 2)
+                       .arg(e.value, 0, 'f', 1)
+                 : Cli::tr("the knot slips: %n throw(s) left, it reads %1", nullptr, e.count)
+                       .arg(knotTypeText(e.knot.type));
   }
   return {};
+}
+
+bool isKnot(const sim::SceneEvent& e) {
+  using K = sim::SceneEventKind;
+  return e.kind == K::ThrowFormed || e.kind == K::KnotTightened || e.kind == K::KnotSlipped;
 }
 
 bool isPierce(const sim::SceneEvent& e) {
@@ -205,6 +293,7 @@ std::string runReportJson(const sim::Scene& scene, const QString& sceneFile,
                         {"hand", e.hand},           {"index", e.index}, {"count", e.count}};
     if (e.value != 0.0) j["value"] = e.value;
     if (isPierce(e)) j["pierce"] = pierceJson(scene.pierces()[static_cast<std::size_t>(e.index)]);
+    if (isKnot(e)) j["knot"] = knotJson(e);
     events.push_back(std::move(j));
   }
   doc["events"] = std::move(events);

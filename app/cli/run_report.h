@@ -1,6 +1,6 @@
 #pragma once
 // What `microsim-cli run` reports once a scene has run: the final state hash, every event
-// (pierces with their angle and bite) and each stage's step times (median, p99, max), as a
+// (pierces with their angle and bite, knots with their type, throws and tension) and each stage's step times (median, p99, max), as a
 // table for people and as JSON for programs.
 #include "cli/cli.h"
 
@@ -29,7 +29,8 @@ void printRunReport(QTextStream& out, const sim::Scene& scene, const QString& sc
                     const StepTimeLog& times);
 
 /// The same as a JSON document: scene, steps, dt, hash, events (a pierce with its point,
-/// face, angle, bite, ...) and timings_ms per stage.
+/// face, angle, bite, ...; a knot event with its type, throws, tension and, as the kind has
+/// them, the throw's handedness and wraps or the slip's cause and slide) and timings_ms per stage.
 std::string runReportJson(const sim::Scene& scene, const QString& sceneFile,
                           const StepTimeLog& times);
 

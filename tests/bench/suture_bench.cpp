@@ -16,10 +16,11 @@
 // 0.4 mm out and back along the span each second (beyond its side's slack: the thread slides).
 // Each frame is one 10 ms step with the default step parameters. Times are the stepping
 // thread's CPU time on one core, per frame, mean over the run; the stretch is the largest
-// over every frame.
+// over every frame. The knot rows that follow are knot_bench.cpp's.
 #include "suture_bench.h"
 
 #include "bench_clock.h"
+#include "knot_bench.h"
 
 #include "microsim/sim/suture/suture_solver.h"
 
@@ -165,7 +166,8 @@ BenchReport runSuture(const BenchOptions& options) {
   BenchCurve tFtl{"ftl (paper)", {}, {}}, tDirect{"direct", {}, {}};
   BenchCurve sFtl{"ftl (paper)", {}, {}}, sDirect{"direct", {}, {}};
 
-  BenchProgress progress(options.progress, static_cast<int>(std::size(cases) * sizes.size()));
+  const int knotCases = options.quick ? 3 : 4;  // knot_bench.cpp: recognition per size, the tight knot
+  BenchProgress progress(options.progress, static_cast<int>(std::size(cases) * sizes.size()) + knotCases);
   for (const Case c : cases) {
     for (int n : sizes) {
       const std::string name = std::string(caseName(c)) + ", " + std::to_string(n) + " links";
@@ -201,7 +203,8 @@ BenchReport runSuture(const BenchOptions& options) {
       }
     }
   }
-  timePlot.curves = {tFtl, tDirect};
+  appendKnotRows(report, options, progress);
+    timePlot.curves = {tFtl, tDirect};
   stretchPlot.curves = {sFtl, sDirect};
   report.plots = {timePlot, stretchPlot};
   return report;

@@ -27,6 +27,9 @@ std::optional<ReplayMarkKind> markKindOf(sim::SceneEventKind kind) {
     case K::GraspEmpty: return ReplayMarkKind::GraspEmpty;
     case K::ThreadCut: return ReplayMarkKind::ThreadCut;
     case K::ThreadTooShort: return ReplayMarkKind::ThreadTooShort;
+    case K::ThrowFormed: return std::nullopt;
+    case K::KnotTightened: return ReplayMarkKind::Knot;
+    case K::KnotSlipped: return ReplayMarkKind::KnotSlipped;
   }
   return std::nullopt;
 }
@@ -48,6 +51,7 @@ ReplayLane laneOf(ReplayMarkKind kind) {
     case ReplayMarkKind::Tear:
     case ReplayMarkKind::Cut: return ReplayLane::Tissue;
     case ReplayMarkKind::Knot:
+    case ReplayMarkKind::KnotSlipped:
     case ReplayMarkKind::ThreadCut: return ReplayLane::Knots;
     case ReplayMarkKind::ThreadTooShort:
     case ReplayMarkKind::GraspEmpty:

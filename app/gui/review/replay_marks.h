@@ -4,8 +4,9 @@
 //
 // A pure mapping from the engine's events, tested without widgets. Lanes group what an
 // instructor looks for together: the needle's passages through the walls, what the forceps
-// held, what happened to the tissue, and errors. Knots have a kind and a lane before the
-// engine reports them, so the timeline takes them when it does.
+// held, what happened to the tissue, the knot and the thread, and errors. A knot is marked when
+// it is pulled tight and when it slips; the throws that form it are not (they come in quick
+// succession while it is tied, and the tightened knot names them).
 
 #include "microsim/sim/scene/scene_events.h"
 
@@ -22,7 +23,8 @@ enum class ReplayMarkKind {
   OverStretch,  ///< a tissue link stretched beyond the scene's limit
   Tear,         ///< links torn
   Cut,          ///< the scalpel cut links
-  Knot,         ///< a knot tied (no engine event yet)
+  Knot,         ///< a knot pulled tight
+  KnotSlipped,  ///< a tightened knot slipped
   ThreadCut,    ///< the scissors cut the thread
   ThreadTooShort,  ///< a cut left the needle too little thread to tie
   GraspEmpty,   ///< a forceps closed on nothing

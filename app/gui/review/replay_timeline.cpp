@@ -97,6 +97,7 @@ QColor ReplayTimeline::colour(ReplayMarkKind kind) {
     case ReplayMarkKind::Tear: return {0xc6, 0x28, 0x28};
     case ReplayMarkKind::Cut: return {0x6d, 0x4c, 0x41};
     case ReplayMarkKind::Knot: return {0x7b, 0x1f, 0xa2};
+    case ReplayMarkKind::KnotSlipped: return {0xc2, 0x18, 0x5b};
     case ReplayMarkKind::ThreadCut: return {0x45, 0x5a, 0x64};
     case ReplayMarkKind::ThreadTooShort: return {0xbf, 0x36, 0x0c};
     case ReplayMarkKind::GraspEmpty: return {0xd8, 0x1b, 0x60};
@@ -129,6 +130,7 @@ QString ReplayTimeline::describe(const ReplayMark& mark) {
     case ReplayMarkKind::Tear: what = tr("Tissue torn"); break;
     case ReplayMarkKind::Cut: what = tr("Cut"); break;
     case ReplayMarkKind::Knot: what = tr("Knot"); break;
+    case ReplayMarkKind::KnotSlipped: what = tr("The knot slipped"); break;
     case ReplayMarkKind::ThreadCut: what = tr("The scissors cut the thread"); break;
     case ReplayMarkKind::ThreadTooShort: what = tr("The needle was left too little thread to tie"); break;
     case ReplayMarkKind::GraspEmpty: what = tr("The forceps closed on nothing"); break;

@@ -94,6 +94,11 @@ Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
     suture_.emplace(def_.needle->suture);
     suture_->gravity = tissue.gravity;
     sutureState_ = suture::SutureState::laidOut(*suture_, def_.needle->pose);
+    if (def_.needle->initialShape.cols() == suture_->nodeCount()) {
+      sutureState_.x = def_.needle->initialShape;
+      sutureState_.xPrev = def_.needle->initialShape;
+    }
+    knots_.emplace(def_.needle->knots);
     sutureSolver_ = suture::makeSutureSolver(def_.needle->solver);
     if (!sutureSolver_) sutureSolver_ = suture::makeSutureSolver("direct");
     if (!tissue.triangles().empty())
@@ -652,6 +657,13 @@ StepReport Scene::step(const InputFrame& in) {
       checkStretch(moved);
       report.times.interactions += now() - t0;
     }
+  }
+
+  // knots: the thread as the step left it
+  if (knots_) {
+    t0 = now();
+    readKnots();
+    report.times.suture += now() - t0;
   }
 
   ++steps_;

@@ -1,6 +1,6 @@
 #include "microsim/sim/suture/knot_recognition.h"
 
-#include "sim/suture/knot_geometry.h"
+#include "bench/knot_geometry.h"
 
 #include <gtest/gtest.h>
 

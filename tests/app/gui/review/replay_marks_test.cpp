@@ -62,6 +62,21 @@ TEST(ReplayMarks, CrossingsAreNumberedByThePassTheyBelongTo) {
   EXPECT_EQ(marks[5].pierce, 1);  // the second pass's entry
 }
 
+TEST(ReplayMarks, AKnotIsMarkedWhenItIsPulledTightAndWhenItSlipsNotThrowByThrow) {
+  using K = sim::SceneEventKind;
+  const std::vector<ReplayMark> marks = replayMarks({
+      timedEvent(K::ThrowFormed, 100, -1, 0),
+      timedEvent(K::ThrowFormed, 140, -1, 1),
+      timedEvent(K::KnotTightened, 150),
+      timedEvent(K::KnotSlipped, 200),
+  });
+  ASSERT_EQ(marks.size(), 2u);
+  EXPECT_EQ(marks[0].kind, ReplayMarkKind::Knot);
+  EXPECT_EQ(marks[0].position, 151);
+  EXPECT_EQ(marks[1].kind, ReplayMarkKind::KnotSlipped);
+  EXPECT_EQ(marks[1].position, 201);
+}
+
 TEST(ReplayMarks, LanesGroupWhatIsLookedForTogether) {
   EXPECT_EQ(laneOf(ReplayMarkKind::PierceEntry), ReplayLane::Pierces);
   EXPECT_EQ(laneOf(ReplayMarkKind::PierceExit), ReplayLane::Pierces);
@@ -71,6 +86,7 @@ TEST(ReplayMarks, LanesGroupWhatIsLookedForTogether) {
   EXPECT_EQ(laneOf(ReplayMarkKind::Tear), ReplayLane::Tissue);
   EXPECT_EQ(laneOf(ReplayMarkKind::Cut), ReplayLane::Tissue);
   EXPECT_EQ(laneOf(ReplayMarkKind::Knot), ReplayLane::Knots);
+  EXPECT_EQ(laneOf(ReplayMarkKind::KnotSlipped), ReplayLane::Knots);
   EXPECT_EQ(laneOf(ReplayMarkKind::GraspEmpty), ReplayLane::Errors);
   EXPECT_EQ(laneOf(ReplayMarkKind::SutureBreak), ReplayLane::Errors);
   EXPECT_EQ(laneOf(ReplayMarkKind::SuturePulledOut), ReplayLane::Errors);

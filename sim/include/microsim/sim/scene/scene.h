@@ -28,6 +28,9 @@
 //                 kContactRounds times); then the links of the nodes that moved are checked
 //                 against the stretch limits (SceneDef::limits: over-stretch events, tears
 //                 removed like cuts), counted as interactions.
+// Last, with a suture, the thread as the step left it is read for a knot (suture/knot_tracker.h,
+// counted as suture time): throws formed, a knot tightened or slipped become events; a thread
+// that has not moved is not read again.
 // Only what the scene declares is built: no needle, no face tree and no suture stage; no
 // scalpel, no link tree.
 //
@@ -55,6 +58,7 @@
 #include "microsim/sim/scene/scene_def.h"
 #include "microsim/sim/scene/scene_events.h"
 #include "microsim/sim/solve/solver.h"
+#include "microsim/sim/suture/knot_tracker.h"
 #include "microsim/sim/suture/suture_model.h"
 #include "microsim/sim/suture/suture_solver.h"
 #include "microsim/sim/tools/forceps.h"
@@ -153,6 +157,9 @@ class Scene {
   /// The controls the last tissue solve had.
   const SpringControls& controls() const { return controls_; }
 
+  /// The knot read from the thread after the last step; null without a suture.
+  const suture::KnotTracker* knots() const { return knots_ ? &*knots_ : nullptr; }
+
   const std::vector<SceneEvent>& events() const { return events_; }
   const std::vector<PierceEvent>& pierces() const { return pierces_; }
 
@@ -183,6 +190,8 @@ class Scene {
   std::vector<std::uint8_t> jawSkip() const;
   PierceEvent describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const;
   void addEvent(SceneEventKind kind, int hand, int index, int count);
+  /// The knot tracker reads the thread as the step left it (scene_knots.cpp).
+  void readKnots();
 
   double now() const { return clock_(); }
 
@@ -197,6 +206,10 @@ class Scene {
   suture::SutureState sutureState_;
   std::unique_ptr<suture::SutureSolver> sutureSolver_;
   std::unique_ptr<suture::ContactSurface> surface_;
+  std::optional<suture::KnotTracker> knots_;  ///< with the suture
+  Points knotNodes_{3, 0};                    ///< the piece read, when the thread is cut
+  std::vector<int> knotAnchors_;              ///< its pierced nodes, in the piece's numbering
+  std::vector<double> knotStretch_;           ///< its links' stretch
   Vec3 tipBefore_ = Vec3::Zero();
   Vec3 tipAfter_ = Vec3::Zero();
   Vec3 tangentAfter_ = Vec3::UnitX();

@@ -53,6 +53,7 @@
 #include "microsim/sim/scene/input_frame.h"
 #include "microsim/sim/scene/spring_scene.h"
 #include "microsim/sim/solve/solver.h"
+#include "microsim/sim/suture/knot_tracker.h"
 #include "microsim/sim/suture/suture_coupling.h"
 #include "microsim/sim/suture/suture_model.h"
 #include "microsim/sim/suture/suture_solver.h"
@@ -119,6 +120,12 @@ struct NeedleDef {
   /// turns around a 0.2 mm jaw, ≈ 1.3 mm, and the reach from the stitch to the jaw); a cut
   /// that leaves less is reported (SceneEventKind::ThreadTooShort)
   double minTieLength = 3.0;
+  /// mm, scene frame: the chain's nodes at the start, 3 by (links + 1), for a thread that is
+  /// already laid (a knot tied, a stitch placed); empty (or another size): laid out straight
+  /// at `pose`
+  suture::Points initialShape{3, 0};
+  /// how the thread is read for a knot each step (events: throws formed, tightened, slipped)
+  suture::KnotTrackerDef knots;
 };
 
 /// Microscissors (tools/microscissors.h): two straight blades hinged at `bladeLength` from

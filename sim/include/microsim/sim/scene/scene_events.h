@@ -1,12 +1,14 @@
 #pragma once
 // What happened during an attempt, as data for assessment (DESIGN.md §Assessment) and for
 // `microsim-cli run`: grabs, releases and grasps on nothing, pierces with their geometry, cuts, suture breaks,
-// rejected input, tissue over-stretch and tears. The engine reports enums and numbers; words are the app's business.
+// rejected input, tissue over-stretch and tears, and the knot read from the thread (throws formed, a knot
+// tightened or slipped). The engine reports enums and numbers; words are the app's business.
 //
-// Units: millimetres, seconds, degrees.
+// Units: millimetres, seconds, degrees; tensions in g·mm/s² (µN).
 
 #include "microsim/sim/mesh/spring_model.h"
 #include "microsim/sim/scene/input_frame.h"
+#include "microsim/sim/suture/knot_tracker.h"
 
 #include <cstdint>
 
@@ -47,6 +49,15 @@ enum class SceneEventKind : std::uint8_t {
   /// after a cut (`hand`, `index` = the link), the needle keeps less free thread than
   /// NeedleDef::minTieLength: `value` = what it keeps (mm)
   ThreadTooShort,
+  /// the knot in the thread gained a throw (suture/knot_tracker.h): `index` = which throw
+  /// (0 = nearest the stitch), `count` = the knot's throws now, `value` = the thread's tension
+  /// (µN); `knot` = the knot's type and the throw's handedness and wraps
+  ThrowFormed,
+  /// a knot of `count` throws was pulled tight: `value` = the tension (µN), `knot.type` its type
+  KnotTightened,
+  /// a tightened knot slipped: `count` = throws left, `value` = the tension (µN), `knot` = what
+  /// is left of it, why it slipped and how far it ran along the thread
+  KnotSlipped,
 };
 
 /// Which surface of a vessel a pierce crossed.
@@ -77,6 +88,16 @@ struct PierceEvent {
   double biteMm = 0.0;              ///< restPoint's distance from the cut end along the axis (mm)
 };
 
+/// The knot of a ThrowFormed, KnotTightened or KnotSlipped event (suture::KnotEvent's fields
+/// that SceneEvent's index, count and value do not carry).
+struct SceneKnot {
+  suture::KnotType type = suture::KnotType::None;               ///< the knot after the event
+  suture::Handedness handedness = suture::Handedness::Right;    ///< ThrowFormed: the throw's
+  int wraps = 0;                                                ///< ThrowFormed: the throw's
+  double slide = 0.0;  ///< KnotSlipped: mm the knot ran along the thread
+  suture::KnotSlipCause cause = suture::KnotSlipCause::StructureLost;  ///< KnotSlipped only
+};
+
 struct SceneEvent {
   SceneEventKind kind = SceneEventKind::GrabTissue;
   double time = 0.0;  ///< s
@@ -86,6 +107,7 @@ struct SceneEvent {
   int count = 0;      ///< see the kind
   double value = 0.0; ///< see the kind (a length or a force, in the units above)
   InputRejection rejection = InputRejection::NonFinite;  ///< InputRejected only
+  SceneKnot knot;     ///< ThrowFormed, KnotTightened, KnotSlipped only
 };
 
 }  // namespace microsim::sim

@@ -1,12 +1,14 @@
 #pragma once
 // Threads tied in known knots, built from curves in code (tori, helices, trochoids), for the
-// knot recognition tests. Every piece is sampled at about `kKnotTestLink` mm per link, as the
-// suture's own links are.
+// knot recognition tests, the scene's knot tests and `bench suture`'s knot rows. Every piece is
+// sampled at about `kKnotTestLink` mm per link, as the suture's own links are; evenlySpaced()
+// resamples a thread into equal links, as a suture's rest lengths are.
 
 #include "microsim/sim/suture/knot_recognition.h"
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -138,6 +140,34 @@ inline ThreadBuilder stitchTwist(double turns, bool rightScrew, bool hitch = fal
     return Vec3(tail(high) + t * Vec3(-2.0 * std::cos(end), -2.0 * std::sin(end), 2.0));
   }, 0.0, 1.0);
   return b;
+}
+
+/// `x` (3 by m) scaled by `scale` about its first node and resampled into `links` links of
+/// equal length along it: a thread a SutureModel of that length and link count can hold at rest.
+inline Points evenlySpaced(const Points& x, double scale, int links) {
+  std::vector<double> arc(static_cast<std::size_t>(x.cols()), 0.0);
+  for (Eigen::Index i = 1; i < x.cols(); ++i) {
+    arc[static_cast<std::size_t>(i)] = arc[static_cast<std::size_t>(i - 1)] + (x.col(i) - x.col(i - 1)).norm();
+  }
+  Points out(3, links + 1);
+  std::size_t seg = 0;
+  for (int k = 0; k <= links; ++k) {
+    const double s = arc.back() * k / links;
+    while (seg + 2 < arc.size() && arc[seg + 1] < s) {
+      ++seg;
+    }
+    const double span = arc[seg + 1] - arc[seg];
+    const double t = span > 0.0 ? std::clamp((s - arc[seg]) / span, 0.0, 1.0) : 0.0;
+    const Vec3 p = x.col(static_cast<Eigen::Index>(seg)) +
+                   t * (x.col(static_cast<Eigen::Index>(seg + 1)) - x.col(static_cast<Eigen::Index>(seg)));
+    out.col(k) = x.col(0) + scale * (p - x.col(0));
+  }
+  return out;
+}
+
+/// Arc length of the polyline `x` (mm).
+inline double polylineLength(const Points& x) {
+  return (x.rightCols(x.cols() - 1) - x.leftCols(x.cols() - 1)).colwise().norm().sum();
 }
 
 /// Loops (curls) along a straight thread: a trochoid x = t − 1.6 sin t, y = 1.6 cos t, bobbing

@@ -1,0 +1,69 @@
+#pragma once
+// A scene whose thread is tied in a surgeon's knot, and the hands that pull it tight: the
+// shipped scene with its needle's suture replaced by a thread (no needle) laid in the analytic
+// surgeon's knot of the recogniser's tests (bench/knot_geometry.h: a left double throw, then a
+// right single, scaled to a quarter, 300 equal links) 12 mm above the vessel. The forceps take
+// the two ends (their jaws along the thread's last links, closed from the third frame) and,
+// from the sixth, pull them apart 0.01 mm a frame each along the line between them. Shared by
+// the engine's scene test and the CLI's report test.
+#include "bench/knot_geometry.h"
+
+#include "microsim/sim/scene/scene.h"
+
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace microsim::testing {
+
+inline constexpr int kKnotSceneLinks = 300;
+
+/// The scene described above (the shipped scene read from `sourceRoot`); nullopt when the
+/// shipped scene does not load.
+inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sourceRoot) {
+  sim::SceneDefLoad load = sim::loadSceneDef(sourceRoot + "/resources/scenes/anastomosis.json");
+  if (!std::holds_alternative<sim::SceneDef>(load)) return std::nullopt;
+  sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
+  namespace kt = sim::suture::knot_test;
+  sim::Points x =
+      kt::evenlySpaced(kt::throwsInARow({{2, false}, {1, true}}).points(), 0.25, kKnotSceneLinks);
+  x.colwise() += sim::Vec3(0.0, 0.0, 12.0) - x.col(0);
+  sim::NeedleDef& needle = *def.needle;
+  needle.suture.needleLinks = 0;
+  needle.suture.links = kKnotSceneLinks;
+  needle.suture.length = kt::polylineLength(x);
+  needle.initialShape = x;
+  return def;
+}
+
+/// A forceps whose jaws lie along the thread's end at node `end` (`inward` = +1 when the
+/// thread runs on from it to higher nodes, −1 to lower), its tip just beyond the end.
+inline sim::HandInput forcepsOnThreadEnd(const sim::Points& x, int end, int inward,
+                                         double closure) {
+  const sim::Vec3 along = (x.col(end) - x.col(end + inward * 6)).normalized();
+  sim::HandInput h;
+  h.tracked = true;
+  h.instrument = sim::Instrument::Forceps;
+  h.position = x.col(end) + 0.05 * along;
+  // the tool's x axis (tip → hinge) runs back along the thread
+  h.orientation = Eigen::Quaterniond::FromTwoVectors(sim::Vec3::UnitX(), -along);
+  h.closure = closure;
+  return h;
+}
+
+/// Frame `k` (0-based) of the pull, for a thread whose nodes were `start` at the beginning.
+inline sim::InputFrame knotPullFrame(const sim::Points& start, int k) {
+  const int last = static_cast<int>(start.cols()) - 1;
+  const sim::Vec3 apart = (start.col(last) - start.col(0)).normalized();
+  const double pull = k < 5 ? 0.0 : 0.01 * (k - 5);
+  const double closure = k < 2 ? 0.0 : 1.0;
+  sim::InputFrame f;
+  f.time = 0.01 * (k + 1);
+  f.hand(sim::Hand::Left) = forcepsOnThreadEnd(start, 0, 1, closure);
+  f.hand(sim::Hand::Left).position -= pull * apart;
+  f.hand(sim::Hand::Right) = forcepsOnThreadEnd(start, last, -1, closure);
+  f.hand(sim::Hand::Right).position += pull * apart;
+  return f;
+}
+
+}  // namespace microsim::testing
