@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <variant>
 #include <vector>
@@ -109,26 +110,36 @@ TEST(NeedlePuncture, ATipDrawnBackBeforeThePunctureLeavesTheWallWholeAndAtRest) 
   EXPECT_LT(largestDisplacement(scene, rest), 1e-3);
 }
 
-// A hand on keys moves the needle a notch, then holds it still for a few steps. The tip that
-// stands pressed into a wall between notches keeps denting it until it punctures; before the
-// dent was judged by the sign of a sub-micrometre offset, a standing tip "drew back" at random
-// and a later notch carried it through the wall with no pierce.
+// A hand on keys moves the needle a notch, then holds it still for a step or two. The tip that
+// stands pressed into a wall between notches keeps denting it until it punctures; when the dent
+// was judged by the sign of a sub-micrometre offset, a standing tip "drew back" at random and a
+// later notch carried it through the far wall from the lumen with no pierce.
 TEST(NeedlePuncture, ATipMovedInNotchesWithStillStepsBetweenStillPunctures) {
   const SceneDef def = shippedAnastomosis();
-  const Recording rec = scriptedStitch(def);
-  Scene scene(def);
-  double time = 0.0;
-  for (const InputFrame& f : rec.frames) {
-    for (int k = 0; k < 3; ++k) {
-      InputFrame held = f;
-      time += 0.01;
-      held.time = time;
-      scene.step(held);
+  for (const double bite : {0.30, 0.33})
+    for (const int hold : {2, 3}) {
+      SCOPED_TRACE("bite " + std::to_string(bite) + " mm, each frame held " + std::to_string(hold) + " steps");
+      StitchScriptDef script;
+      script.biteMm = bite;
+      const Recording rec = scriptedStitch(def, script);
+      // the holder's grip, the carry to the start and the pass through both ends (no hand-over)
+      const int passFrames = 2 * 10 + 50 + static_cast<int>(std::lround(script.passSeconds * def.step.rateHz));
+      Scene scene(def);
+      double time = 0.0;
+      for (int i = 0; i < passFrames; ++i)
+        for (int k = 0; k < hold; ++k) {
+          InputFrame held = rec.frames[static_cast<std::size_t>(i)];
+          time += 0.01;
+          held.time = time;
+          scene.step(held);
+        }
+      ASSERT_EQ(scene.pierces().size(), 4u);
+      for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(scene.pierces()[k].entry, k % 2 == 0) << k;
+        EXPECT_EQ(scene.pierces()[k].end, k < 2 ? 0 : 1) << k;
+      }
+      EXPECT_TRUE(scene.tissueState().x.allFinite());
     }
-  }
-  ASSERT_EQ(scene.pierces().size(), 4u);
-  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(scene.pierces()[k].entry, k % 2 == 0) << k;
-  EXPECT_TRUE(scene.tissueState().x.allFinite());
 }
 
 }  // namespace
