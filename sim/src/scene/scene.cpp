@@ -10,13 +10,28 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <initializer_list>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace microsim::sim {
 
 namespace {
+
+/// The vessel (index into `vessels`) and the surface of it that tissue face `face` lies on;
+/// none for a face of another object.
+std::optional<std::pair<int, VesselSurface>> vesselSurfaceOf(const std::vector<SceneVessel>& vessels, int face) {
+  const auto in = [face](const TriangleRange& r) { return face >= r.begin && face < r.end; };
+  for (std::size_t v = 0; v < vessels.size(); ++v) {
+    const SceneVessel& vessel = vessels[v];
+    const int index = static_cast<int>(v);
+    if (in(vessel.outerSurface)) return std::pair{index, VesselSurface::Outer};
+    if (in(vessel.innerSurface)) return std::pair{index, VesselSurface::Inner};
+    if (in(vessel.cutEnd)) return std::pair{index, VesselSurface::CutEnd};
+    if (in(vessel.clampedEnd)) return std::pair{index, VesselSurface::ClampedEnd};
+  }
+  return std::nullopt;
+}
 
 double steadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -306,38 +321,24 @@ PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tang
   e.angleDeg = tools::pierceAngleDeg(aimed, restNormal.isZero(0.0) ? c.normal : restNormal);
 
   // which vessel, which surface, which wall, how far from the cut
-  const auto in = [&](const TriangleRange& r) { return c.face >= r.begin && c.face < r.end; };
-  for (std::size_t v = 0; v < def_.vessels.size(); ++v) {
-    const SceneVessel& vessel = def_.vessels[v];
-    VesselSurface surface = VesselSurface::NotAVessel;
-    if (in(vessel.outerSurface))
-      surface = VesselSurface::Outer;
-    else if (in(vessel.innerSurface))
-      surface = VesselSurface::Inner;
-    else if (in(vessel.cutEnd))
-      surface = VesselSurface::CutEnd;
-    else if (in(vessel.clampedEnd))
-      surface = VesselSurface::ClampedEnd;
-    if (surface == VesselSurface::NotAVessel) continue;
-    e.vessel = static_cast<int>(v);
+  if (const auto on = vesselSurfaceOf(def_.vessels, c.face)) {
+    const SceneVessel& vessel = def_.vessels[static_cast<std::size_t>(on->first)];
+    e.vessel = on->first;
     e.end = vessel.end;
-    e.surface = surface;
+    e.surface = on->second;
     const Vec3 axis = vessel.def.direction;
     const Vec3 rel = e.restPoint - vessel.def.origin;
     const double along = rel.dot(axis);
     const Vec3 radial = rel - along * axis;
     e.wall = radial.dot(def_.camera.eye - e.restPoint) >= 0.0 ? VesselWall::Front : VesselWall::Back;
     e.biteMm = vessel.def.length - along;
-    break;
   }
   return e;
 }
 
 double Scene::wallThickness(int face) const {
-  for (const SceneVessel& vessel : def_.vessels)
-    for (const TriangleRange& r : {vessel.outerSurface, vessel.innerSurface, vessel.cutEnd, vessel.clampedEnd})
-      if (face >= r.begin && face < r.end) return vessel.def.wallThickness;
-  return 0.0;
+  const auto on = vesselSurfaceOf(def_.vessels, face);
+  return on ? def_.vessels[static_cast<std::size_t>(on->first)].def.wallThickness : 0.0;
 }
 
 void Scene::applyCrossings() {

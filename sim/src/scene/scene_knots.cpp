@@ -55,10 +55,8 @@ void Scene::readKnots() {
   std::sort(knotAnchors_.begin(), knotAnchors_.end());
   knotAnchors_.erase(std::unique(knotAnchors_.begin(), knotAnchors_.end()), knotAnchors_.end());
 
-  knotStretch_.resize(static_cast<std::size_t>(piece.last - piece.first));
-  for (int i = piece.first; i < piece.last; ++i)
-    knotStretch_[static_cast<std::size_t>(i - piece.first)] =
-        ((s.x.col(i + 1) - s.x.col(i)).norm() - model.rest(i)) / model.rest(i);
+  const std::vector<double> stretch = suture::linkStretches(model, s);
+  knotStretch_.assign(stretch.begin() + piece.first, stretch.begin() + piece.last);
 
   // the whole chain is read in place; a piece of it is copied
   const bool whole = piece.first == 0 && piece.last == model.nodeCount() - 1;
