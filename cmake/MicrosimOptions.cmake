@@ -18,7 +18,9 @@ elseif(MICROSIM_SANITIZE STREQUAL "fuzzer")
   endif()
   # every library is instrumented for coverage; only the fuzz executables link libFuzzer's main
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
-                      -fno-sanitize-recover=undefined)
+                      -fno-sanitize-recover=undefined
+                      -fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/tests/sanitizers/eigen.ignorelist
+                      -fsanitize-coverage-ignorelist=${PROJECT_SOURCE_DIR}/tests/sanitizers/eigen-coverage.ignorelist)
   add_link_options(-fsanitize=address,undefined)
 elseif(NOT MICROSIM_SANITIZE STREQUAL "")
   message(FATAL_ERROR "MICROSIM_SANITIZE must be empty, 'address', 'thread' or 'fuzzer', not '${MICROSIM_SANITIZE}'")

@@ -240,8 +240,7 @@ bool AggregationMultigrid::build(const BlockSystem& system, const Eigen::Matrix3
   // the coarsest level: factored when small enough
   if (levels_.back().a.rows() <= kFactorLimit) {
     const Eigen::SparseMatrix<double> coarsest = levels_.back().a;
-    coarse_.compute(coarsest);
-    factored_ = coarse_.info() == Eigen::Success;
+    factored_ = coarse_.compute(coarsest);
   }
   const std::size_t count = levels_.size();
   residual_.resize(count);
@@ -255,7 +254,7 @@ void AggregationMultigrid::cycle(int level, const Eigen::VectorXd& b, Eigen::Vec
   // coarsest: solve, or smooth when it could not be factored
   if (level + 1 == levelCount()) {
     if (factored_) {
-      x = coarse_.solve(b);
+      coarse_.solve(b, x);
     } else {
       x.setZero(b.size());
       gaussSeidel(l.a, l.inverseDiagonal, b, x, true);

@@ -28,9 +28,9 @@
 // Deterministic: every loop runs in index order.
 
 #include "solve/block_system.h"
+#include "solve/sparse_ldlt.h"
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <vector>
@@ -76,7 +76,7 @@ class AggregationMultigrid final : public Preconditioner {
 
   std::vector<Level> levels_;
   BlockRows fine_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarse_;
+  SparseLdlt coarse_;
   bool factored_ = false;
   std::vector<Eigen::Matrix3d> jacobi_;  ///< level-0 fallback
   mutable std::vector<Eigen::VectorXd> residual_, coarseB_, coarseX_;

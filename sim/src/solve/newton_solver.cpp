@@ -27,8 +27,7 @@
 #include "solve/multigrid.h"
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
-
-#include <Eigen/SparseCholesky>
+#include "solve/sparse_ldlt.h"
 
 #include <algorithm>
 #include <array>
@@ -54,12 +53,11 @@ constexpr int kRefactorIterations = 12;
 /// factors instead of a new factorisation (most steps of a stitch).
 class FactorPreconditioner final : public Preconditioner {
  public:
-  explicit FactorPreconditioner(const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>& f)
-      : factors_(f) {}
-  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override { z = factors_.solve(r); }
+  explicit FactorPreconditioner(const SparseLdlt& f) : factors_(f) {}
+  void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override { factors_.solve(r, z); }
 
  private:
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>& factors_;
+  const SparseLdlt& factors_;
 };
 
 /// A multigrid hierarchy and what it was built for.
@@ -417,7 +415,7 @@ class NewtonSolver final : public TissueSolver {
     factorValid_ = true;
     factoredRegion_ = region_;
     factoredAlive_ = model.aliveLinkCount();
-    direction_ = ldlt_.solve(force_);
+    ldlt_.solve(force_, direction_);
     return direction_.allFinite();
   }
 
@@ -444,8 +442,7 @@ class NewtonSolver final : public TissueSolver {
       factoredPattern_ = pattern_;
       factoredSize_ = m;
     }
-    ldlt_.factorize(matrix_);
-    return ldlt_.info() == Eigen::Success && (ldlt_.vectorD().array() > 0.0).all();
+    return ldlt_.factorize(matrix_) && ldlt_.positiveDefinite();
   }
 
   /// One Newton step on the region from force_ (current); false when it could not move.
@@ -554,7 +551,7 @@ class NewtonSolver final : public TissueSolver {
   // the direct path: the lower triangle, its factorisation and the pattern it was analysed for
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> matrix_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
+  SparseLdlt ldlt_;
   std::vector<std::pair<int, int>> pattern_, factoredPattern_;
   int factoredSize_ = -1;
   bool factorValid_ = false;
