@@ -321,6 +321,20 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       if (model.needleLinks() > 0 && !needleHeld) rigidifyNeedle(model, state.x, swage);
     }
 
+    // last, the thread against itself once more, without friction: the substep ends with no
+    // two strands closer than the thread's diameter. Everything before it ends in a length
+    // restore, which pulls strands wound round each other together when the thread is drawn
+    // tight; with contact checked only before it, two strands of a knot crept into each other
+    // (20 µm apart, then 18, 14, ..., 1) and crossed within 15 steps, so a surgeon's knot pulled
+    // by both ends came apart into a square one. The lengths this pass disturbs are the
+    // thread's stretch under the knot's tension, restored by the next substep. It corrects
+    // overlaps where they are now (the substep's start given as now: the catch of pairs that
+    // passed through each other belongs to the rounds above, before the lengths), and moves
+    // neither the leaders nor the rigid needle. The paper's follow-the-leader ("ftl") stays as
+    // it was, the faithful peer whose lengths are exact after every substep.
+    if (params.selfContact && name() != "ftl")
+      self_.project(state.x, state.x, radius, 0.0, selfSkip, movableSurface_, state.alive, nullptr);
+
     // slide through pierces, then break between grips
     state.time += h;
     report.slides += slidePierces(model, state, current_, params.slideTolerance, report.events);

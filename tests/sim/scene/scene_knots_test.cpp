@@ -1,9 +1,12 @@
 // Knots in a scene: the scene reads its thread every step and reports what the knot tracker
 // finds as scene events. A thread laid in a surgeon's knot (the analytic geometry the recogniser
 // is tested on, knot_geometry.h) above the shipped vessel, both ends taken by the forceps and
-// pulled apart, reports its two throws as it is first read; the thread runs through them without
-// coming taut, so nothing is tightened; the shipped stitch (two passes through two walls, no knot
-// tied) reports no knot at all.
+// pulled apart, reports its two throws as it is first read; drawn through its loops against their
+// friction, the thread comes taut and the knot is tightened, and it stays a surgeon's knot: no
+// strand passes through another (before the suture's last self-contact pass, two strands crept
+// into each other and crossed after 190 steps, and the knot read square, then a single throw).
+// The shipped stitch (two passes through two walls, no knot tied) reports no knot at all.
+#include "microsim/sim/collide/segment_segment.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 
@@ -13,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -38,16 +42,29 @@ int knotEventCount(const Scene& scene) {
   return n;
 }
 
-TEST(SceneKnots, ASurgeonsKnotIsReportedThrowByThrowAndNotTightenedWhileItsThreadRunsThrough) {
+/// mm: the closest two links of the thread come, over links at least three apart.
+double closestStrands(const Points& x) {
+  double closest = std::numeric_limits<double>::infinity();
+  const int links = static_cast<int>(x.cols()) - 1;
+  for (int i = 0; i < links; ++i)
+    for (int j = i + 3; j < links; ++j)
+      closest = std::min(closest, collide::closestSegmentSegment(x.col(i), x.col(i + 1), x.col(j), x.col(j + 1)).distance);
+  return closest;
+}
+
+TEST(SceneKnots, ASurgeonsKnotPulledByBothEndsIsTightenedAndHoldsItsThrows) {
   const std::optional<SceneDef> def = testing::surgeonsKnotSceneDef(kKnotSceneRoot);
   ASSERT_TRUE(def);
   Scene scene(*def);
   const Points start = scene.sutureState()->x;
+  const double diameter = 2.0 * scene.sutureModel()->def().contactRadius;
   double stretch = 0.0;
+  double closest = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 250; ++k) {
     scene.step(testing::knotPullFrame(start, k));
     const std::vector<double> s = suture::linkStretches(*scene.sutureModel(), *scene.sutureState());
     stretch = std::max(stretch, *std::max_element(s.begin(), s.end()));
+    if (k % 5 == 4) closest = std::min(closest, closestStrands(scene.sutureState()->x));
   }
 
   // read at step 0, confirmed at step 1: the double throw, then the single of the other hand
@@ -65,14 +82,19 @@ TEST(SceneKnots, ASurgeonsKnotIsReportedThrowByThrowAndNotTightenedWhileItsThrea
   EXPECT_EQ(formed[1].knot.wraps, 1);
   EXPECT_EQ(knotEventsOf(scene, SceneEventKind::GripSuture).size(), 2U);
 
-  // the thread runs through the throws as the ends are drawn 2.4 mm apart (nothing locks them
-  // yet: issue 19, item 3), so it never comes taut: no knot is tightened, and none can slip;
-  // the double throw has been drawn down to a single one, and the knot reads square
-  EXPECT_LT(stretch, suture::KnotTrackerDef{}.tightStrain);
-  EXPECT_TRUE(knotEventsOf(scene, SceneEventKind::KnotTightened).empty());
+  // the ends drawn 2.4 mm apart pull the thread through the loops against their friction: it
+  // comes taut, the knot is tightened once, as a surgeon's knot, and never slips
+  const std::vector<SceneEvent> tightened = knotEventsOf(scene, SceneEventKind::KnotTightened);
+  ASSERT_EQ(tightened.size(), 1U);
+  EXPECT_EQ(tightened[0].knot.type, suture::KnotType::Surgeons);
+  EXPECT_EQ(tightened[0].count, 2);
+  EXPECT_GT(tightened[0].value, 0.0);
+  EXPECT_GE(stretch, suture::KnotTrackerDef{}.tightStrain);
   EXPECT_TRUE(knotEventsOf(scene, SceneEventKind::KnotSlipped).empty());
-  EXPECT_EQ(scene.knots()->reading().type, suture::KnotType::Square);
+  EXPECT_EQ(scene.knots()->reading().type, suture::KnotType::Surgeons);
   EXPECT_EQ(scene.knots()->reading().throws.size(), 2U);
+  // the strands press on each other but stay more than half a diameter apart
+  EXPECT_GT(closest, 0.5 * diameter);
 }
 
 TEST(SceneKnots, TheShippedStitchTiesNoKnot) {
