@@ -23,11 +23,44 @@ struct DiagramSegment {
   Vec3 direction;       // in space, along the curve
   double depthA = 0.0;  // x·d at a and at b; the extensions lie above everything
   double depthB = 0.0;
-  double at = 0.0;      // curve parameter of a
+  double at = 0.0;  // curve parameter of a
   bool closure = false;
 };
 
-double crossOf(const Vec2& p, const Vec2& q) { return p.x() * q.y() - p.y() * q.x(); }
+double crossOf(const Vec2& p, const Vec2& q) {
+  return p.x() * q.y() - p.y() * q.x();
+}
+
+// (cell key, segment) entries in key order, then segment order within a key (the order
+// std::sort gives the pairs), by a counting sort over the keys' range while that range is
+// small beside the entries (a knot's links crowd a few cells), else by std::sort (a long
+// thread laid out straight spans many empty cells)
+void sortByCell(std::vector<std::pair<long long, std::size_t>>& filed) {
+  if (filed.empty()) {
+    return;
+  }
+  const auto [lowest, highest] = std::minmax_element(
+      filed.begin(), filed.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+  const long long low = lowest->first;
+  const auto span = static_cast<unsigned long long>(highest->first - low);
+  if (span >= 8 * filed.size()) {
+    std::sort(filed.begin(), filed.end());
+    return;
+  }
+  // entries are filed in segment order, so a stable placement keeps segments ordered per key
+  std::vector<std::size_t> start(span + 2, 0);
+  for (const auto& f : filed) {
+    ++start[static_cast<std::size_t>(f.first - low) + 1];
+  }
+  for (std::size_t k = 1; k < start.size(); ++k) {
+    start[k] += start[k - 1];
+  }
+  std::vector<std::pair<long long, std::size_t>> sorted(filed.size());
+  for (const auto& f : filed) {
+    sorted[start[static_cast<std::size_t>(f.first - low)]++] = f;
+  }
+  filed.swap(sorted);
+}
 
 }  // namespace
 
@@ -101,6 +134,17 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
     const Vec2 r = si.b - si.a;
     const Vec2 q = sj.b - sj.a;
     const double denominator = crossOf(r, q);
+    // most pairs that share a cell do not cross: the two orientation tests reject them before
+    // any square root (the clearance of a parallel pair is the one test that needs the lengths)
+    const double sq = r.squaredNorm() * q.squaredNorm();
+    if (denominator * denominator > 1e-28 * sq) {
+      const Vec2 w = sj.a - si.a;
+      const double ti = crossOf(w, q) / denominator;
+      const double tj = crossOf(w, r) / denominator;
+      if (ti < 0.0 || ti >= 1.0 || tj < 0.0 || tj >= 1.0) {
+        return;
+      }
+    }
     const double scale = r.norm() * q.norm();
     if (std::abs(denominator) <= 1e-14 * scale || scale == 0.0) {
       // parallel pictures: overlapping ones hide which passes where
@@ -139,20 +183,21 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
     const double sinAngle = std::abs(denominator) / scale;
     worst = std::min(worst, sinAngle / kDiagramTransverseSin);
     if (!si.closure && !sj.closure) {
-      const double ends = std::min({ti * r.norm(), (1.0 - ti) * r.norm(), tj * q.norm(),
-                                    (1.0 - tj) * q.norm()});
+      const double ends =
+          std::min({ti * r.norm(), (1.0 - ti) * r.norm(), tj * q.norm(), (1.0 - tj) * q.norm()});
       worst = std::min(worst, ends / clearance);
     }
   };
 
-  // candidate pairs from a grid of cells about two links wide: a link is filed under every
+  // candidate pairs from a grid of cells one mean link wide: a link is filed under every
   // cell its box touches, and a pair is tested in the first cell the two share, so the work
-  // follows the links and the crossings, not their square. The two extensions are long: each
-  // is tested against every link.
+  // follows the links and the crossings, not their square; the cells are numbered row by row
+  // over the links' extent, so the entries sort by counting. The two extensions are long: each
+  // is tested against every link whose box reaches it.
   const std::size_t count = segments.size();
   const std::size_t firstLink = 1;
   const std::size_t lastLink = count - 2;
-  const double cell = 2.0 * std::max(meanLink, 1e-9);
+  const double cell = std::max(meanLink, 1e-9);
   struct CellRange {
     long long x0, y0, x1, y1;
   };
@@ -160,19 +205,31 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
   std::vector<std::pair<long long, std::size_t>> filed;
   filed.reserve(4 * count);
   const auto cellOf = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
-  constexpr long long kCellRow = 1LL << 31;
   for (std::size_t k = firstLink; k <= lastLink; ++k) {
     const DiagramSegment& g = segments[k];
-    const CellRange r{cellOf(std::min(g.a.x(), g.b.x()) - centre.x()), cellOf(std::min(g.a.y(), g.b.y()) - centre.y()),
-                      cellOf(std::max(g.a.x(), g.b.x()) - centre.x()), cellOf(std::max(g.a.y(), g.b.y()) - centre.y())};
-    ranges[k] = r;
+    ranges[k] = {cellOf(std::min(g.a.x(), g.b.x()) - centre.x()),
+                 cellOf(std::min(g.a.y(), g.b.y()) - centre.y()),
+                 cellOf(std::max(g.a.x(), g.b.x()) - centre.x()),
+                 cellOf(std::max(g.a.y(), g.b.y()) - centre.y())};
+  }
+  // a cell's key counts the cells row by row from the lowest one the links touch
+  long long lowX = ranges[firstLink].x0, lowY = ranges[firstLink].y0, highY = ranges[firstLink].y1;
+  for (std::size_t k = firstLink; k <= lastLink; ++k) {
+    lowX = std::min(lowX, ranges[k].x0);
+    lowY = std::min(lowY, ranges[k].y0);
+    highY = std::max(highY, ranges[k].y1);
+  }
+  const long long row = highY - lowY + 1;
+  const auto keyOf = [&](long long cx, long long cy) { return (cx - lowX) * row + (cy - lowY); };
+  for (std::size_t k = firstLink; k <= lastLink; ++k) {
+    const CellRange& r = ranges[k];
     for (long long cx = r.x0; cx <= r.x1; ++cx) {
       for (long long cy = r.y0; cy <= r.y1; ++cy) {
-        filed.emplace_back(cx * kCellRow + cy, k);
+        filed.emplace_back(keyOf(cx, cy), k);
       }
     }
   }
-  std::sort(filed.begin(), filed.end());
+  sortByCell(filed);
   for (std::size_t from = 0; from < filed.size();) {
     std::size_t to = from + 1;
     while (to < filed.size() && filed[to].first == filed[from].first) {
@@ -188,7 +245,7 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
         // the first cell both boxes share
         const long long cx = std::max(ranges[i].x0, ranges[j].x0);
         const long long cy = std::max(ranges[i].y0, ranges[j].y0);
-        if (cx * kCellRow + cy == filed[from].first) {
+        if (keyOf(cx, cy) == filed[from].first) {
           testPair(std::min(i, j), std::max(i, j));
         }
       }
@@ -196,10 +253,19 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
     from = to;
   }
   for (const std::size_t e : {std::size_t{0}, count - 1}) {
+    // a link whose box (grown by the clearance) misses the extension's can neither cross it
+    // nor lie along it
+    const DiagramSegment& ext = segments[e];
+    const Vec2 low = ext.a.cwiseMin(ext.b) - Vec2::Constant(clearance);
+    const Vec2 high = ext.a.cwiseMax(ext.b) + Vec2::Constant(clearance);
     for (std::size_t k = firstLink; k <= lastLink; ++k) {
-      if (k + 1 != e && e + 1 != k) {
-        testPair(std::min(e, k), std::max(e, k));
+      const DiagramSegment& g = segments[k];
+      if (k + 1 == e || e + 1 == k || g.a.cwiseMax(g.b).x() < low.x() ||
+          g.a.cwiseMax(g.b).y() < low.y() || g.a.cwiseMin(g.b).x() > high.x() ||
+          g.a.cwiseMin(g.b).y() > high.y()) {
+        continue;
       }
+      testPair(std::min(e, k), std::max(e, k));
     }
   }
 
@@ -243,12 +309,19 @@ std::vector<Vec3> knotViewDirections(const Points& x) {
   const Vec3 a = frame.col(0);
   const Vec3 b = frame.col(1);
   const Vec3 c = frame.col(2);
-  std::vector<Vec3> directions = {a, b, c,
-                                  (a + b).normalized(), (a - b).normalized(),
-                                  (a + c).normalized(), (a - c).normalized(),
-                                  (b + c).normalized(), (b - c).normalized(),
-                                  (a + b + c).normalized(), (a + b - c).normalized(),
-                                  (a - b + c).normalized(), (a - b - c).normalized()};
+  std::vector<Vec3> directions = {a,
+                                  b,
+                                  c,
+                                  (a + b).normalized(),
+                                  (a - b).normalized(),
+                                  (a + c).normalized(),
+                                  (a - c).normalized(),
+                                  (b + c).normalized(),
+                                  (b - c).normalized(),
+                                  (a + b + c).normalized(),
+                                  (a + b - c).normalized(),
+                                  (a - b + c).normalized(),
+                                  (a - b - c).normalized()};
   return directions;
 }
 

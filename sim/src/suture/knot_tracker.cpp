@@ -1,5 +1,7 @@
 #include "microsim/sim/suture/knot_tracker.h"
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -23,11 +25,33 @@ bool isTieableKnot(const KnotReading& r) {
   return !r.throws.empty() && r.type != KnotType::None && r.type != KnotType::Unknown;
 }
 
+// The rotation that best carries the nodes `before` onto `now` (same count, ≥ 2; least squares
+// about their centroids, Kabsch). The last clear picture's direction turned with it shows the
+// thread as it was seen then: a thread carried and turned by the hands keeps its picture, where
+// a direction fixed in the scene would lose it and send the tracker to a search. The
+// covariance is summed node by node, so every compiler sums in one order.
+Eigen::Matrix3d turnSince(const Points& before, const Points& now) {
+  const Vec3 from = before.rowwise().mean();
+  const Vec3 to = now.rowwise().mean();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (Eigen::Index i = 0; i < now.cols(); ++i) {
+    covariance += (now.col(i) - to) * (before.col(i) - from).transpose();
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance,
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d flip = Eigen::Matrix3d::Identity();
+  if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0) {
+    flip(2, 2) = -1.0;  // a rotation, never a mirror
+  }
+  return svd.matrixU() * flip * svd.matrixV().transpose();
+}
+
 }  // namespace
 
 KnotTracker::KnotTracker(KnotTrackerDef def) : def_(std::move(def)) {}
 
-std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::span<const int> anchors,
+std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
+                                               std::span<const int> anchors,
                                                std::span<const double> linkStretch) {
   const std::size_t firstEvent = events_.size();
   double stretch = 0.0;
@@ -37,17 +61,18 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
   const double tension = def_.axialStiffness * stretch;
 
   // read the thread again only when it has moved
-  bool moved = read_.cols() != x.cols() ||
-               !std::equal(anchors.begin(), anchors.end(), readAnchors_.begin(), readAnchors_.end());
+  bool moved = read_.cols() != x.cols() || !std::equal(anchors.begin(), anchors.end(),
+                                                       readAnchors_.begin(), readAnchors_.end());
   if (!moved && x.cols() > 0) {
-    moved = (x - read_).colwise().squaredNorm().maxCoeff() > def_.moveTolerance * def_.moveTolerance;
+    moved =
+        (x - read_).colwise().squaredNorm().maxCoeff() > def_.moveTolerance * def_.moveTolerance;
   }
   if (moved && x.cols() >= 2) {
     ++readings_;
     KnotReading reading;
     bool read = false;
-    if (direction_) {
-      const KnotDiagram diagram = projectKnot(x, anchors, *direction_);
+    if (direction_ && read_.cols() == x.cols()) {
+      const KnotDiagram diagram = projectKnot(x, anchors, turnSince(read_, x) * *direction_);
       if (diagram.quality >= def_.recognition.clearQuality && diagram.closureCrossings == 0) {
         reading = readKnotDiagram(x, diagram, def_.recognition);
         // one picture may keep a standing knot; a change is put to the vote of all of them
@@ -66,7 +91,8 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x, std::s
     readAnchors_.assign(anchors.begin(), anchors.end());
     arc_.assign(static_cast<std::size_t>(x.cols()), 0.0);
     for (Eigen::Index i = 1; i < x.cols(); ++i) {
-      arc_[static_cast<std::size_t>(i)] = arc_[static_cast<std::size_t>(i - 1)] + (x.col(i) - x.col(i - 1)).norm();
+      arc_[static_cast<std::size_t>(i)] =
+          arc_[static_cast<std::size_t>(i - 1)] + (x.col(i) - x.col(i - 1)).norm();
     }
 
     // a structure counts once it has been read confirmReadings times in a row
@@ -116,7 +142,8 @@ void KnotTracker::confirm(int step, const KnotReading& reading, double tension) 
 
   // a tight knot that lost throws or its name has slipped; one that gained a throw is a new knot
   if (tight_) {
-    const bool lost = has < had || reading.type == KnotType::None || reading.type == KnotType::Unknown ||
+    const bool lost = has < had || reading.type == KnotType::None ||
+                      reading.type == KnotType::Unknown ||
                       (reading.type == KnotType::SlipKnot && before.type != KnotType::SlipKnot);
     if (lost) {
       KnotEvent e = knotEventOf(KnotEventKind::KnotSlipped, step, reading, tension);
@@ -151,7 +178,8 @@ double KnotTracker::place(const KnotReading& reading) const {
   }
   const double s = std::clamp(sum / static_cast<double>(reading.throws.size()), 0.0,
                               static_cast<double>(arc_.size() - 1));
-  const auto i = static_cast<std::size_t>(std::min(std::floor(s), static_cast<double>(arc_.size()) - 1.0));
+  const auto i =
+      static_cast<std::size_t>(std::min(std::floor(s), static_cast<double>(arc_.size()) - 1.0));
   const double t = s - static_cast<double>(i);
   return i + 1 < arc_.size() ? arc_[i] + t * (arc_[i + 1] - arc_[i]) : arc_[i];
 }
