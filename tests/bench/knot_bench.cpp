@@ -1,6 +1,6 @@
 // suture's knot rows (issue 19, item 8): what reading the knot costs a step, and a step of the
-// suture solve with a double throw drawn until the thread is taut (the goal is for a knot pulled
-// tight), each beside its goal and with its accuracy.
+// suture solve with a double throw at a stitch pulled tight, each beside its goal and with its
+// accuracy.
 //
 // Recognition. A surgeon's knot (a left double throw, then a right single: knot_geometry.h's
 // analytic curves, scaled to a quarter) resampled into 60, 200 and 2000 equal links. Steady:
@@ -17,13 +17,12 @@
 // strands about each other above two pierces), resampled into 200 links, its two pierces held
 // as the suture's pierces, both ends gripped and pulled outwards 0.01 mm a step until the
 // thread is taut (a link stretched past the tracker's tightStrain, 0.2 %; at most 10 mm), then
-// held there: the direct solver's step time over the held steps, how far the ends were drawn,
-// the largest link stretch over the whole pull and the tracker's KnotTightened events. Nothing
-// locks a throw yet (issue 19, item 3) and the ends turn freely in the grips, so the strands
-// untwist as they are drawn (two wraps, then one, then none, before the thread is taut): the
-// rows say so through how often the double throw was read and the tightened events, and the
-// held step is that of a taut thread whose knot has come undone. The knot is read on each step: its
-// reading (a single throw of two wraps) is counted right or wrong as above.
+// held there: the direct solver's step time over the held steps (the goal's "step with a knot
+// pulled tight"), how far the ends were drawn, the largest link stretch over the whole pull and
+// the tracker's KnotTightened events. The strands press on each other where they wind and the
+// self-contact that ends each substep keeps them apart (suture_solver.cpp), so the double throw
+// holds its two wraps while it is drawn down: the knot is read on each step, and a reading of
+// one throw of two wraps is counted right.
 #include "knot_bench.h"
 
 #include "bench_clock.h"
@@ -217,14 +216,13 @@ void appendKnotRows(BenchReport& report, const BenchOptions& options, BenchProgr
                                   100.0 * m.right / std::max(1, m.steps), "% of steps"));
   }
 
-  const std::string tight = "double throw at a stitch drawn until taut, 200 links [direct]";
+  const std::string tight = "double throw at a stitch pulled tight, 200 links [direct]";
   progress.next(tight);
   const TightMeasure t =
       measureTightKnot(200, options.quick ? 300 : 1000, options.quick ? 20 : 200);
-  report.rows.push_back(knotRow(
-      tight,
-      "suture step, held taut (goal with a knot pulled tight <= 200 us; ratio = ours / goal)",
-      t.stepUs, "us", kTightStepGoalUs));
+  report.rows.push_back(
+      knotRow(tight, "suture step, knot pulled tight (goal <= 200 us; ratio = ours / goal)",
+              t.stepUs, "us", kTightStepGoalUs));
   report.rows.push_back(knotRow(tight, "each end drawn until taut", t.pulledMm, "mm"));
   report.rows.push_back(knotRow(tight, "max stretch while tightening", t.maxStretch, "relative"));
   report.rows.push_back(

@@ -189,15 +189,15 @@ KnotDiagram projectKnot(const Points& x, std::span<const int> anchors, const Vec
     }
   };
 
-  // candidate pairs from a grid of cells one mean link wide: a link is filed under every
-  // cell its box touches, and a pair is tested in the first cell the two share, so the work
+  // candidate pairs from a grid of cells one and a half mean links wide: a link is filed under
+  // every cell its box touches, and a pair is tested in the first cell the two share, so the work
   // follows the links and the crossings, not their square; the cells are numbered row by row
   // over the links' extent, so the entries sort by counting. The two extensions are long: each
   // is tested against every link whose box reaches it.
   const std::size_t count = segments.size();
   const std::size_t firstLink = 1;
   const std::size_t lastLink = count - 2;
-  const double cell = std::max(meanLink, 1e-9);
+  const double cell = 1.5 * std::max(meanLink, 1e-9);
   struct CellRange {
     long long x0, y0, x1, y1;
   };
