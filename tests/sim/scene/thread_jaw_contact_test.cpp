@@ -1,0 +1,121 @@
+// The thread against the forceps' jaws in a scene (issue 19, item 1: the thread does not pass
+// through the jaws, and can be wound round them for an instrument tie). A thread 5 mm long lies
+// straight above the shipped vessel, its end held by the left forceps; the right forceps, closed
+// on nothing, stands upright beside the thread's middle and is carried 1 mm across it. The jaws
+// push the thread ahead of them: no node comes closer to a jaw's axis than the jaw's radius
+// there, and the thread's middle is carried with them. The same forceps carried closed along
+// the far side of the thread, never reaching it, leaves it where it lay.
+#include "microsim/sim/collide/segment_segment.h"
+#include "microsim/sim/scene/scene.h"
+#include "microsim/sim/tools/jaw_contact.h"
+
+#include "support/knot_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace microsim::sim {
+namespace {
+
+const std::string kJawSceneRoot = MICROSIM_SOURCE_DIR;
+constexpr int kJawThreadLinks = 100;
+constexpr double kJawThreadLength = 5.0;  // mm
+
+/// The shipped scene with its needle's suture replaced by a straight thread 12 mm above the
+/// vessel, along x and centred on the z axis (no needle).
+std::optional<SceneDef> straightThreadScene() {
+  SceneDefLoad load = loadSceneDef(kJawSceneRoot + "/resources/scenes/anastomosis.json");
+  if (!std::holds_alternative<SceneDef>(load)) return std::nullopt;
+  SceneDef def = std::get<SceneDef>(std::move(load));
+  Points x(3, kJawThreadLinks + 1);
+  for (int i = 0; i <= kJawThreadLinks; ++i)
+    x.col(i) = Vec3(-0.5 * kJawThreadLength + kJawThreadLength * i / kJawThreadLinks, 0.0, 12.0);
+  NeedleDef& needle = *def.needle;
+  needle.suture.needleLinks = 0;
+  needle.suture.links = kJawThreadLinks;
+  needle.suture.length = kJawThreadLength;
+  needle.initialShape = x;
+  return def;
+}
+
+/// Closed forceps standing upright (jaws rising from the tip) with the tip 0.3 mm below the
+/// thread, at (0, y) in the thread's plan.
+HandInput uprightClosedForceps(double y) {
+  HandInput h;
+  h.tracked = true;
+  h.instrument = Instrument::Forceps;
+  h.position = Vec3(0.0, y, 11.7);
+  // the tool's x axis (tip → hinge) points up
+  h.orientation = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), Vec3::UnitZ());
+  h.closure = 1.0;
+  return h;
+}
+
+/// mm: how far the thread keeps inside the right forceps' jaws at their nearest: the smallest
+/// of (distance from a link to a jaw's axis − the jaw's radius there) over links and jaws;
+/// negative when a link passes inside a jaw.
+double clearanceToJaws(const Scene& scene) {
+  const suture::SutureState& st = *scene.sutureState();
+  double clearance = std::numeric_limits<double>::infinity();
+  for (const tools::JawCapsule& jaw : tools::jawCapsules(*scene.forceps(Hand::Right))) {
+    for (int i = 0; i + 1 < st.x.cols(); ++i) {
+      const collide::SegmentClosest c =
+          collide::closestSegmentSegment(st.x.col(i), st.x.col(i + 1), jaw.tip, jaw.heel);
+      const double radius = jaw.tipRadius + c.t * (jaw.heelRadius - jaw.tipRadius);
+      clearance = std::min(clearance, c.distance - radius);
+    }
+  }
+  return clearance;
+}
+
+struct Sweep {
+  double clearance = std::numeric_limits<double>::infinity();  // over every step
+  double middleY = 0.0;                                        // the thread's middle at the end
+};
+
+/// The left forceps holds the thread's end (closed from the third frame); the right forceps,
+/// closed 3 mm away (closing there, on nothing), comes to y = `fromY` in 20 frames, then moves
+/// 0.01 mm a frame towards −y for 100 frames.
+Sweep sweepAcross(double fromY) {
+  const std::optional<SceneDef> def = straightThreadScene();
+  EXPECT_TRUE(def);
+  if (!def) return {};
+  Scene scene(*def);
+  const Points start = scene.sutureState()->x;
+  Sweep sweep;
+  for (int k = 0; k < 130; ++k) {
+    InputFrame f;
+    f.time = 0.01 * (k + 1);
+    f.hand(Hand::Left) = testing::forcepsOnThreadEnd(start, 0, 1, k < 2 ? 0.0 : 1.0);
+    const double y = k < 20 ? fromY + 3.0 - 0.15 * k : fromY - 0.01 * std::min(k - 20, 100);
+    f.hand(Hand::Right) = uprightClosedForceps(y);
+    scene.step(f);
+    sweep.clearance = std::min(sweep.clearance, clearanceToJaws(scene));
+  }
+  sweep.middleY = scene.sutureState()->x(1, kJawThreadLinks / 2);
+  EXPECT_FALSE(scene.forceps(Hand::Right)->holdsSuture());
+  return sweep;
+}
+
+TEST(ThreadJawContact, ClosedJawsCarriedAcrossTheThreadPushItAheadOfThem) {
+  const Sweep sweep = sweepAcross(0.3);
+  // the jaws' surface, not their axis, meets the thread: a thread radius of give at most
+  EXPECT_GT(sweep.clearance, -0.01);
+  // the jaws end 0.7 mm beyond where the thread lay: its middle went with them
+  EXPECT_LT(sweep.middleY, -0.5);
+}
+
+TEST(ThreadJawContact, ClosedJawsThatNeverReachTheThreadLeaveIt) {
+  // carried from y = 2.3 to 1.3 mm: always well clear of the thread at y = 0
+  const Sweep sweep = sweepAcross(2.3);
+  EXPECT_GT(sweep.clearance, 1.0);
+  EXPECT_NEAR(sweep.middleY, 0.0, 0.05);
+}
+
+}  // namespace
+}  // namespace microsim::sim
