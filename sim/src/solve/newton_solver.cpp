@@ -23,11 +23,11 @@
 // The threshold is the budget's residual tolerance times forceScale. Nodes outside R are
 // held where they are during a step, as if fixed; the result is exact once R stops growing.
 #include "microsim/sim/solve/spring_kernels.h"
+#include "solve/block_ldlt.h"
 #include "solve/block_system.h"
 #include "solve/multigrid.h"
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
-#include "solve/sparse_ldlt.h"
 
 #include <algorithm>
 #include <array>
@@ -47,17 +47,22 @@ constexpr int kRebuildIterations = 25;
 /// CG iterations, preconditioned by an earlier factorisation, above which the region's
 /// Hessian is factorised anew.
 constexpr int kRefactorIterations = 12;
+/// CG iterations of the last solve with the kept factors above which the next direction
+/// factorises anew rather than try them again: factors that needed this many have gone stale
+/// (the Hessian moved on: contact, the turning needle), and each further try costs more CG
+/// iterations than a factorisation (~15 CG iterations' worth in 3 by 3 blocks) saves.
+constexpr int kStaleIterations = 4;
 
 /// An earlier LDLᵀ factorisation of the region's Hessian as the preconditioner of CG on the
 /// current one: a pull that changes the Hessian a little costs a few solves with the old
 /// factors instead of a new factorisation (most steps of a stitch).
 class FactorPreconditioner final : public Preconditioner {
  public:
-  explicit FactorPreconditioner(const SparseLdlt& f) : factors_(f) {}
+  explicit FactorPreconditioner(const BlockLdlt& f) : factors_(f) {}
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const override { factors_.solve(r, z); }
 
  private:
-  const SparseLdlt& factors_;
+  const BlockLdlt& factors_;
 };
 
 /// A multigrid hierarchy and what it was built for.
@@ -233,14 +238,17 @@ class NewtonSolver final : public TissueSolver {
     springs_ = &springs;
     springStart_.assign(static_cast<std::size_t>(n) + 1, 0);
     for (const PointSpring& sp : springs)
-      for (int k = 0; k < sp.size(); ++k) ++springStart_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)]) + 1];
-    for (int i = 0; i < n; ++i) springStart_[static_cast<std::size_t>(i) + 1] += springStart_[static_cast<std::size_t>(i)];
+      for (int k = 0; k < sp.size(); ++k)
+        ++springStart_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)]) + 1];
+    for (int i = 0; i < n; ++i)
+      springStart_[static_cast<std::size_t>(i) + 1] += springStart_[static_cast<std::size_t>(i)];
     springOf_.resize(static_cast<std::size_t>(springStart_.back()));
     std::vector<int> fill(springStart_.begin(), springStart_.end() - 1);
     for (int t = 0; t < static_cast<int>(springs.size()); ++t) {
       const PointSpring& sp = springs[static_cast<std::size_t>(t)];
       for (int k = 0; k < sp.size(); ++k)
-        springOf_[static_cast<std::size_t>(fill[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)])]++)] = {t, k};
+        springOf_[static_cast<std::size_t>(
+            fill[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(k)])]++)] = {t, k};
     }
   }
 
@@ -294,10 +302,12 @@ class NewtonSolver final : public TissueSolver {
       const Vec3 fl = linkForce(link, x.col(link.a), x.col(link.b));
       f += link.a == i ? fl : Vec3(-fl);
     }
-    for (int e = springStart_[static_cast<std::size_t>(i)]; e < springStart_[static_cast<std::size_t>(i) + 1]; ++e) {
+    for (int e = springStart_[static_cast<std::size_t>(i)];
+         e < springStart_[static_cast<std::size_t>(i) + 1]; ++e) {
       const auto [t, slot] = springOf_[static_cast<std::size_t>(e)];
       const PointSpring& sp = (*springs_)[static_cast<std::size_t>(t)];
-      f += sp.weights[static_cast<std::size_t>(slot)] * pointSpringForce(sp, pointSpringOffset(sp, x));
+      f += sp.weights[static_cast<std::size_t>(slot)] *
+           pointSpringForce(sp, pointSpringOffset(sp, x));
     }
     return f;
   }
@@ -389,7 +399,9 @@ class NewtonSolver final : public TissueSolver {
         system_.diag[ra] += ca * ca * h;
         for (int b = a + 1; b < sp.size(); ++b) {
           const int rb = local_[static_cast<std::size_t>(sp.nodes[static_cast<std::size_t>(b)])];
-          if (rb >= 0) system_.off.push_back({ra, rb, SymBlock::from(ca * sp.weights[static_cast<std::size_t>(b)] * h)});
+          if (rb >= 0)
+            system_.off.push_back(
+                {ra, rb, SymBlock::from(ca * sp.weights[static_cast<std::size_t>(b)] * h)});
         }
       }
     }
@@ -399,11 +411,14 @@ class NewtonSolver final : public TissueSolver {
   /// while it serves, else the true Hessian factorised, else its projection.
   bool directDirection(const SpringModel& model, const Points& x, double eta) {
     assemble(model, x, false);
-    if (factorValid_ && factoredRegion_ == region_ && factoredAlive_ == model.aliveLinkCount()) {
-      const PcgResult pcg =
-          solvePcg(system_, FactorPreconditioner(ldlt_), force_, direction_, eta, kRefactorIterations);
+    if (factorValid_ && factoredRegion_ == region_ && factoredAlive_ == model.aliveLinkCount() &&
+        lastPcgIterations_ <= kStaleIterations) {
+      const PcgResult pcg = solvePcg(system_, FactorPreconditioner(ldlt_), force_, direction_, eta,
+                                     kRefactorIterations);
+      lastPcgIterations_ = pcg.iterations;
       if (pcg.ok && pcg.relativeResidual <= eta && direction_.allFinite()) return true;
     }
+    lastPcgIterations_ = 0;
     factorValid_ = false;
     if (!factorise()) {
       // indefinite (compressed links): this iteration takes the projection. (Keeping the
@@ -419,31 +434,9 @@ class NewtonSolver final : public TissueSolver {
     return direction_.allFinite();
   }
 
-  /// Factorises system_ by sparse LDLᵀ; false when it is not positive definite. The symbolic
-  /// analysis is kept while the pattern stays.
-  bool factorise() {
-    const int m = system_.size();
-    triplets_.clear();
-    pattern_.clear();
-    for (int r = 0; r < m; ++r)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j <= i; ++j) triplets_.emplace_back(3 * r + i, 3 * r + j, system_.diag[r](i, j));
-    for (const BlockSystem::Off& o : system_.off) {
-      const int hi = std::max(o.a, o.b), lo = std::min(o.a, o.b);
-      pattern_.push_back({hi, lo});
-      const Eigen::Matrix3d b = o.m.full();
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) triplets_.emplace_back(3 * hi + i, 3 * lo + j, b(i, j));
-    }
-    matrix_.resize(3 * m, 3 * m);
-    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-    if (pattern_ != factoredPattern_ || m != factoredSize_) {
-      ldlt_.analyzePattern(matrix_);
-      factoredPattern_ = pattern_;
-      factoredSize_ = m;
-    }
-    return ldlt_.factorize(matrix_) && ldlt_.positiveDefinite();
-  }
+  /// Factorises system_ by sparse LDLᵀ in 3 by 3 blocks; false when it is not positive
+  /// definite. The ordering and symbolic analysis are kept while the pattern stays.
+  bool factorise() { return ldlt_.factorize(system_); }
 
   /// One Newton step on the region from force_ (current); false when it could not move.
   /// `growing`: the region grew just before this step.
@@ -515,7 +508,8 @@ class NewtonSolver final : public TissueSolver {
 
   /// Builds a hierarchy for the region in place of the least recently used one.
   Hierarchy& buildMultigrid(const SpringModel& model, const Points& x) {
-    Hierarchy& h = hierarchies_[0].lastUse <= hierarchies_[1].lastUse ? hierarchies_[0] : hierarchies_[1];
+    Hierarchy& h =
+        hierarchies_[0].lastUse <= hierarchies_[1].lastUse ? hierarchies_[0] : hierarchies_[1];
     const int m = static_cast<int>(region_.size());
     Eigen::Matrix3Xd positions(3, m);
     for (int r = 0; r < m; ++r) positions.col(r) = x.col(region_[r]);
@@ -548,13 +542,10 @@ class NewtonSolver final : public TissueSolver {
   Eigen::VectorXd force_, direction_;
   Points start_;
   BlockSystem system_;
-  // the direct path: the lower triangle, its factorisation and the pattern it was analysed for
-  std::vector<Eigen::Triplet<double>> triplets_;
-  Eigen::SparseMatrix<double> matrix_;
-  SparseLdlt ldlt_;
-  std::vector<std::pair<int, int>> pattern_, factoredPattern_;
-  int factoredSize_ = -1;
+  // the direct path: the region's Hessian factorised, and for which region
+  BlockLdlt ldlt_;
   bool factorValid_ = false;
+  int lastPcgIterations_ = 0;  ///< of the last CG solve preconditioned by these factors
   std::vector<int> factoredRegion_;
   int factoredAlive_ = -1;
   // the soft terms of this solve, and per node the (term, slot) pairs that act on it
