@@ -5,6 +5,8 @@
 #include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/metrics.h"
 
+#include "support/severed_vessel.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,34 +24,16 @@ using microsim::sim::Vec3;
 using microsim::sim::VesselSurface;
 using microsim::sim::VesselWall;
 
-const std::string kEndProductRoot = MICROSIM_SOURCE_DIR;
-constexpr double kEndProductRadius = 0.5;  // mm
-constexpr double kEndProductWall = 0.1;    // mm
+using microsim::testing::kSeveredVesselRadius;
+using microsim::testing::severedVessel;
 
-// one severed vessel along +x, cut ends at x = ∓0.25, camera above (+z)
-Attempt endProductVessel() {
-  Attempt a;
-  for (int end = 0; end < 2; ++end) {
-    VesselGeometry g;
-    g.vessel = end;
-    g.object = 0;
-    g.end = end;
-    g.axis = Vec3(end == 0 ? 1.0 : -1.0, 0.0, 0.0);
-    g.cutCentre = Vec3(end == 0 ? -0.25 : 0.25, 0.0, 0.0);
-    g.radius = kEndProductRadius;
-    g.wallThickness = kEndProductWall;
-    g.angleAxis = Vec3::UnitX();
-    g.angleZero = Vec3::UnitZ();
-    a.vessels.push_back(g);
-  }
-  return a;
-}
+const std::string kEndProductRoot = MICROSIM_SOURCE_DIR;
 
 // a point on end `end`'s outer surface at `deg` around (0° up, +90° toward −y)
 Vec3 aroundEnd(int end, double deg) {
   const double rad = deg * std::numbers::pi / 180.0;
-  return {end == 0 ? -0.5 : 0.5, -kEndProductRadius * std::sin(rad),
-          kEndProductRadius * std::cos(rad)};
+  return {end == 0 ? -0.5 : 0.5, -kSeveredVesselRadius * std::sin(rad),
+          kSeveredVesselRadius * std::cos(rad)};
 }
 
 // one wall passage: in through `in`, out through `out`
@@ -76,7 +60,7 @@ void addStitch(Attempt& a, double degA, double degB, double biteA = 0.25, double
 
 // eight stitches 45° apart, each bite 2.5 wall thicknesses, parallel to the axis
 Attempt cleanRing() {
-  Attempt a = endProductVessel();
+  Attempt a = severedVessel();
   for (int s = 0; s < 8; ++s) addStitch(a, 45.0 * s, 45.0 * s);
   return a;
 }
@@ -100,7 +84,7 @@ TEST(EndProduct, ACleanRingOfStitchesHasNoErrors) {
 }
 
 TEST(EndProduct, BackWallAndPartialThicknessPassagesAreFoundAtTheirStitchAndAngle) {
-  Attempt a = endProductVessel();
+  Attempt a = severedVessel();
   addStitch(a, 0.0, 0.0);
   addStitch(a, 90.0, 90.0);
   // stitch 2: its second bite goes in and out of the inner surface
@@ -146,7 +130,7 @@ TEST(EndProduct, ABiteBeyondThreeWallThicknessesIsWide) {
 }
 
 TEST(EndProduct, AStitchWhoseBitesLieApartAroundTheWallIsOblique) {
-  Attempt a = endProductVessel();
+  Attempt a = severedVessel();
   for (int s = 0; s < 8; ++s) addStitch(a, 45.0 * s, 45.0 * s + (s == 5 ? 20.0 : 10.0));
   const std::vector<EndProductError> errors = endProductErrors(a);
   ASSERT_EQ(errors.size(), 1u);
@@ -159,7 +143,7 @@ TEST(EndProduct, AStitchWhoseBitesLieApartAroundTheWallIsOblique) {
   EXPECT_EQ(computeMetrics(a).value("oblique_stitches"), 1.0);
 
   // across 0°: 350° and 10° are 20° apart
-  Attempt across = endProductVessel();
+  Attempt across = severedVessel();
   addStitch(across, 350.0, 10.0);
   ASSERT_EQ(endProductErrors(across).size(), 1u);
   EXPECT_NEAR(endProductErrors(across)[0].measured, 20.0, 1e-9);
@@ -168,7 +152,7 @@ TEST(EndProduct, AStitchWhoseBitesLieApartAroundTheWallIsOblique) {
 
 TEST(EndProduct, UnequalSpacingIsTheGapBetweenNeighboursAroundTheCircle) {
   // placed as triangulation places them: 0°, 180°, then 90° and 200°; the mean gap is 90°
-  Attempt a = endProductVessel();
+  Attempt a = severedVessel();
   for (double deg : {0.0, 180.0, 90.0, 200.0}) addStitch(a, deg, deg);
   const std::vector<EndProductError> errors = endProductErrors(a);
   ASSERT_EQ(errors.size(), 2u);
@@ -185,7 +169,7 @@ TEST(EndProduct, UnequalSpacingIsTheGapBetweenNeighboursAroundTheCircle) {
   EXPECT_EQ(computeMetrics(a).value("unequal_spacing"), 2.0);
 
   // two stitches have no spacing to judge
-  Attempt two = endProductVessel();
+  Attempt two = severedVessel();
   addStitch(two, 0.0, 0.0);
   addStitch(two, 30.0, 30.0);
   EXPECT_TRUE(endProductErrors(two).empty());
@@ -194,7 +178,7 @@ TEST(EndProduct, UnequalSpacingIsTheGapBetweenNeighboursAroundTheCircle) {
 TEST(EndProduct, AHoleTheThreadNeverReachedIsNotJudged) {
   Attempt a = cleanRing();
   // a bite drawn back out of the outer surface before stitch 0, at 20°
-  Attempt withdrawn = endProductVessel();
+  Attempt withdrawn = severedVessel();
   addPassage(withdrawn, 0, 20.0, 0.45, VesselSurface::Outer, VesselSurface::Outer);
   withdrawn.pierces.insert(withdrawn.pierces.end(), a.pierces.begin(), a.pierces.end());
   withdrawn.events.push_back(endProductEvent(SceneEventKind::PierceReleased, 0));
