@@ -1086,6 +1086,78 @@
         <source>the knot slips: %n throw(s) left, it reads %1</source>
         <translation><numerusform>der Knoten rutscht: %n Wurf bleibt, er ist %1</numerusform><numerusform>der Knoten rutscht: %n Würfe bleiben, er ist %1</numerusform></translation>
     </message>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>Unterbrechung der Nahtreihe</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>Hinterwandnaht</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>schräge Naht</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>zu weiter Stich</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>Stich nicht durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>ungleicher Nahtabstand</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>Wandeinriss</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>zu fest geknüpfte Naht</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>Faden im Lumen</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>große Randüberlappung</translation>
+    </message>
+    <message>
+        <source>end product</source>
+        <translation>Endergebnis</translation>
+    </message>
+    <message>
+        <source>lapse index %1</source>
+        <translation>Lapse-Index %1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>stitch</source>
+        <translation>Naht</translation>
+    </message>
+    <message>
+        <source>pierce</source>
+        <translation>Einstich</translation>
+    </message>
+    <message>
+        <source>at (°)</source>
+        <translation>bei (°)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>limit</source>
+        <translation>Grenze</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2055,6 +2127,26 @@
         <source>%1 (%2)</source>
         <comment>a label and its unit</comment>
         <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Anastomosis lapse index</source>
+        <translation>Anastomosis Lapse Index (Fehlerzahl)</translation>
+    </message>
+    <message>
+        <source>Oblique stitches</source>
+        <translation>Schräge Nähte</translation>
+    </message>
+    <message>
+        <source>Partial-thickness bites</source>
+        <translation>Stiche nicht durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>Wide bites</source>
+        <translation>Zu weite Stiche</translation>
+    </message>
+    <message>
+        <source>Unequally spaced stitches</source>
+        <translation>Ungleich verteilte Nähte</translation>
     </message>
 </context>
 <context>

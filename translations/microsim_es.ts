@@ -1086,6 +1086,78 @@
         <source>the knot slips: %n throw(s) left, it reads %1</source>
         <translation><numerusform>el nudo se desliza: queda %n lazada, es %1</numerusform><numerusform>el nudo se desliza: quedan %n lazadas, es %1</numerusform></translation>
     </message>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>interrupción de la línea de sutura</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>punto en la pared posterior</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>punto oblicuo</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>paso demasiado ancho</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>paso de espesor parcial</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>separación desigual</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>desgarro de la pared</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>punto demasiado apretado</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>hilo en la luz</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>gran solapamiento de los bordes</translation>
+    </message>
+    <message>
+        <source>end product</source>
+        <translation>resultado final</translation>
+    </message>
+    <message>
+        <source>lapse index %1</source>
+        <translation>índice de fallos %1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>stitch</source>
+        <translation>punto</translation>
+    </message>
+    <message>
+        <source>pierce</source>
+        <translation>paso</translation>
+    </message>
+    <message>
+        <source>at (°)</source>
+        <translation>en (°)</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>medido</translation>
+    </message>
+    <message>
+        <source>limit</source>
+        <translation>límite</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2055,6 +2127,26 @@
         <source>%1 (%2)</source>
         <comment>a label and its unit</comment>
         <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Anastomosis lapse index</source>
+        <translation>Índice de fallos de la anastomosis</translation>
+    </message>
+    <message>
+        <source>Oblique stitches</source>
+        <translation>Puntos oblicuos</translation>
+    </message>
+    <message>
+        <source>Partial-thickness bites</source>
+        <translation>Pasos de espesor parcial</translation>
+    </message>
+    <message>
+        <source>Wide bites</source>
+        <translation>Pasos demasiado anchos</translation>
+    </message>
+    <message>
+        <source>Unequally spaced stitches</source>
+        <translation>Puntos con separación desigual</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #include "cli/score_report.h"
 
+#include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/pierce_fields.h"
 
 #include <cmath>
@@ -70,6 +71,62 @@ void printPierces(QTextStream& out, const as::AttemptScore& s) {
   }
 }
 
+QString endProductErrorName(as::EndProductErrorKind kind) {
+  using K = as::EndProductErrorKind;
+  switch (kind) {
+    case K::SutureLineDisruption:
+      return Cli::tr("suture-line disruption");
+    case K::BackWallStitch:
+      return Cli::tr("back-wall stitch");
+    case K::ObliqueStitch:
+      return Cli::tr("oblique stitch");
+    case K::WideBite:
+      return Cli::tr("wide bite");
+    case K::PartialThicknessBite:
+      return Cli::tr("partial-thickness bite");
+    case K::UnequalSpacing:
+      return Cli::tr("unequal spacing");
+    case K::WallTear:
+      return Cli::tr("wall tear");
+    case K::OverTightStitch:
+      return Cli::tr("over-tight stitch");
+    case K::ThreadInLumen:
+      return Cli::tr("thread in the lumen");
+    case K::LargeEdgeOverlap:
+      return Cli::tr("large edge overlap");
+  }
+  return {};
+}
+
+// a 0-based index shown 1-based, as the pierces are numbered; "–" for none
+QString endProductIndexText(int index) {
+  return index >= 0 ? QString::number(index + 1) : QStringLiteral("–");
+}
+
+void printEndProduct(QTextStream& out, const as::AttemptScore& s) {
+  out << Cli::tr("end product") << "  "
+      << Cli::tr("lapse index %1").arg(static_cast<int>(s.endProduct.size())) << '\n';
+  if (s.endProduct.empty()) {
+    out << "  " << Cli::tr("none") << '\n';
+    return;
+  }
+  out << "      " << Cli::tr("error").leftJustified(26) << Cli::tr("stitch").rightJustified(7)
+      << Cli::tr("pierce").rightJustified(8) << Cli::tr("at (°)").rightJustified(8)
+      << Cli::tr("measured").rightJustified(10) << Cli::tr("limit").rightJustified(8) << "  "
+      << Cli::tr("unit") << '\n';
+  for (std::size_t i = 0; i < s.endProduct.size(); ++i) {
+    const as::EndProductError& e = s.endProduct[i];
+    out << "  " << QString::number(i + 1).rightJustified(2) << "  "
+        << endProductErrorName(e.kind).leftJustified(26)
+        << endProductIndexText(e.stitch).rightJustified(7)
+        << endProductIndexText(e.passage).rightJustified(8)
+        << number(e.angleDeg, 1).rightJustified(8) << number(e.measured, 3).rightJustified(10)
+        << number(e.limit, 2).rightJustified(8);
+    if (std::isfinite(e.measured)) out << "  " << QLatin1String(as::endProductErrorUnit(e.kind));
+    out << '\n';
+  }
+}
+
 nlohmann::json metricsJson(const as::AttemptScore& s) {
   nlohmann::json metrics = nlohmann::json::array();
   for (const as::MetricScore& m : s.metrics)
@@ -98,6 +155,21 @@ nlohmann::json piercesJson(const as::AttemptScore& s) {
     pierces.push_back(std::move(pierce));
   }
   return pierces;
+}
+
+// indices are 0-based into "stitches" and "pierces", null for none
+nlohmann::json endProductJson(const as::AttemptScore& s) {
+  const auto index = [](int i) { return i >= 0 ? nlohmann::json(i) : nlohmann::json(); };
+  nlohmann::json errors = nlohmann::json::array();
+  for (const as::EndProductError& e : s.endProduct)
+    errors.push_back({{"kind", std::string(as::endProductErrorKey(e.kind))},
+                      {"stitch", index(e.stitch)},
+                      {"pierce", index(e.passage)},
+                      {"angle_deg", jsonNumber(e.angleDeg)},
+                      {"measured", jsonNumber(e.measured)},
+                      {"limit", jsonNumber(e.limit)},
+                      {"unit", std::string(as::endProductErrorUnit(e.kind))}});
+  return errors;
 }
 
 nlohmann::json stitchesJson(const as::AttemptScore& s) {
@@ -132,6 +204,8 @@ void printScoreReport(QTextStream& out, const as::AttemptScore& s, const as::Rub
   printMetrics(out, s);
   out << '\n';
   printPierces(out, s);
+  out << '\n';
+  printEndProduct(out, s);
 }
 
 nlohmann::json scoreReportJson(const as::AttemptScore& s, const as::Rubric& rubric,
@@ -148,6 +222,7 @@ nlohmann::json scoreReportJson(const as::AttemptScore& s, const as::Rubric& rubr
   doc["metrics"] = metricsJson(s);
   doc["pierces"] = piercesJson(s);
   doc["stitches"] = stitchesJson(s);
+  doc["end_product"] = endProductJson(s);
   return doc;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // What `microsim-cli score` reports: the score and pass, every metric with its value, target,
-// weight, points and feedback key, the pierces and the stitches, as a table for people and
-// as JSON for programs.
+// weight, points and feedback key, the pierces and the stitches, and the finished
+// anastomosis's errors (end_product.h), as a table for people and as JSON for programs.
 #include "cli/cli.h"
 
 #include "microsim/assessment/scoring/rubric.h"
@@ -22,7 +22,9 @@ void printScoreReport(QTextStream& out, const assessment::AttemptScore& score,
                       const assessment::Rubric& rubric, const ScoredFiles& files);
 
 /// The same as JSON: score, passed, rubric, scene, recording, frames, truncated,
-/// never_events, metrics, pierces, stitches (a missing value is null).
+/// never_events, metrics, pierces, stitches, end_product (a missing value is null; an
+/// end-product error's "kind" is endProductErrorKey's, its "stitch" and "pierce" 0-based
+/// indices into "stitches" and "pierces").
 nlohmann::json scoreReportJson(const assessment::AttemptScore& score,
                                const assessment::Rubric& rubric, const ScoredFiles& files);
 

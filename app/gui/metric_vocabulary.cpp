@@ -14,7 +14,7 @@ namespace {
 using KeyLabel = std::pair<std::string_view, const char*>;
 
 // metric key → label, in the scoring catalogue's order
-constexpr std::array<KeyLabel, 23> kMetricLabels{{
+constexpr std::array<KeyLabel, 28> kMetricLabels{{
     {"time", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Time")},
     {"path_length", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length")},
     {"path_length_left", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length, left hand")},
@@ -39,6 +39,11 @@ constexpr std::array<KeyLabel, 23> kMetricLabels{{
     {"bite_symmetry", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Bite asymmetry")},
     {"spacing", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Stitch spacing")},
     {"triangulation_error", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Triangulation error")},
+    {"lapse_index", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Anastomosis lapse index")},
+    {"oblique_stitches", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Oblique stitches")},
+    {"partial_thickness_bites", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Partial-thickness bites")},
+    {"wide_bites", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Wide bites")},
+    {"unequal_spacing", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Unequally spaced stitches")},
 }};
 
 // pierce field key → label, in pierceFields() order

@@ -10,7 +10,7 @@ namespace microsim::assessment {
 
 namespace {
 
-constexpr std::array<MetricInfo, 23> kCatalogue{{
+constexpr std::array<MetricInfo, 28> kCatalogue{{
     {"time", "s"},
     {"path_length", "mm"},
     {"path_length_left", "mm"},
@@ -34,6 +34,11 @@ constexpr std::array<MetricInfo, 23> kCatalogue{{
     {"bite_symmetry", "mm"},
     {"spacing", "deg"},
     {"triangulation_error", "deg"},
+    {"lapse_index", "count"},
+    {"oblique_stitches", "count"},
+    {"partial_thickness_bites", "count"},
+    {"wide_bites", "count"},
+    {"unequal_spacing", "count"},
 }};
 
 // mean of the finite values `get` picks; NaN when there are none
@@ -109,6 +114,10 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
   const double backWall = static_cast<double>(
       std::count_if(p.begin(), p.end(), [](const auto& x) { return x.backWall; }));
   const std::optional<double> triangulation = triangulationErrorDeg(m.stitches);
+  m.endProduct = endProductErrors(attempt);
+  const auto lapseCount = [&](EndProductErrorKind kind) {
+    return static_cast<double>(countEndProductErrors(m.endProduct, kind));
+  };
 
   const std::array<double, kCatalogue.size()> values{
       attempt.duration,
@@ -134,6 +143,11 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
       meanOf(m.stitches, [](const StitchMetrics& x) { return x.symmetryMm; }),
       meanOf(m.stitches, [](const StitchMetrics& x) { return x.spacingDeg; }),
       triangulation ? *triangulation : kNaN,
+      static_cast<double>(m.endProduct.size()),
+      lapseCount(EndProductErrorKind::ObliqueStitch),
+      lapseCount(EndProductErrorKind::PartialThicknessBite),
+      lapseCount(EndProductErrorKind::WideBite),
+      lapseCount(EndProductErrorKind::UnequalSpacing),
   };
   m.values.reserve(kCatalogue.size());
   for (std::size_t i = 0; i < kCatalogue.size(); ++i)

@@ -81,6 +81,7 @@ AttemptScore scoreAttempt(const Attempt& attempt, const Rubric& rubric) {
   AttemptScore out = scoreMetrics(metrics.values, rubric);
   out.pierces = std::move(metrics.pierces);
   out.stitches = std::move(metrics.stitches);
+  out.endProduct = std::move(metrics.endProduct);
   out.truncated = attempt.truncated;
   return out;
 }

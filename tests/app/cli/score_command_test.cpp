@@ -1,7 +1,7 @@
 // `microsim-cli score` as a user runs it: the shipped stitch scores the pinned value with
-// the single-stitch rubric (table and JSON), the scene comes from the recording when it names
-// one (and is looked for when it moved), --db stores the attempt, and bad rubrics,
-// recordings and arguments fail with a message naming the problem.
+// the single-stitch rubric (table and JSON) and shows no end-product error, the scene comes
+// from the recording when it names one (and is looked for when it moved), --db stores the
+// attempt, and bad rubrics, recordings and arguments fail with a message naming the problem.
 #include "support/cli_runner.h"
 #include "support/golden_stitch.h"
 
@@ -64,6 +64,10 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
     for (const char* field : {"key", "value", "unit", "target", "points", "feedback"})
       EXPECT_TRUE(m.toObject().contains(QLatin1String(field))) << field;
   EXPECT_EQ(doc.value(QStringLiteral("pierces")).toArray().size(), 2);
+  // one clean stitch: no lapse of the finished anastomosis (end_product_test.cpp says why)
+  EXPECT_TRUE(r.out.contains(QStringLiteral("end product  lapse index 0\n  none\n"))) << r.out.toStdString();
+  ASSERT_TRUE(doc.value(QStringLiteral("end_product")).isArray());
+  EXPECT_TRUE(doc.value(QStringLiteral("end_product")).toArray().isEmpty());
 
   // the same every run
   const QString again = dir.filePath(QStringLiteral("again.json"));

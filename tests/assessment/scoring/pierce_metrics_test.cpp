@@ -3,6 +3,8 @@
 // around the circumference.
 #include "microsim/assessment/scoring/pierce_metrics.h"
 
+#include "support/severed_vessel.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,24 +17,7 @@ using microsim::sim::Vec3;
 using microsim::sim::VesselSurface;
 using microsim::sim::VesselWall;
 
-// one severed vessel along +x, cut ends at x = ∓0.25, camera above (+z)
-Attempt severedVessel() {
-  Attempt a;
-  for (int end = 0; end < 2; ++end) {
-    VesselGeometry g;
-    g.vessel = end;
-    g.object = 0;
-    g.end = end;
-    g.axis = Vec3(end == 0 ? 1.0 : -1.0, 0.0, 0.0);
-    g.cutCentre = Vec3(end == 0 ? -0.25 : 0.25, 0.0, 0.0);
-    g.radius = 0.5;
-    g.wallThickness = 0.1;
-    g.angleAxis = Vec3::UnitX();
-    g.angleZero = Vec3::UnitZ();
-    a.vessels.push_back(g);
-  }
-  return a;
-}
+using microsim::testing::severedVessel;
 
 PierceEvent pierce(bool entry, int end, VesselSurface s, double angle, double bite,
                    const Vec3& point, VesselWall wall = VesselWall::Front) {

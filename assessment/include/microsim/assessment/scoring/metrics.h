@@ -30,9 +30,17 @@
 //   bite_symmetry        mm     mean |bite_a − bite_b| of the stitches
 //   spacing              deg    mean angle between consecutive stitches
 //   triangulation_error  deg    largest |arc − 120°| of the first three stitches
+//   lapse_index          count  errors of the finished anastomosis (end_product.h; without a
+//                               leak test, which the attempt does not carry)
+//   oblique_stitches     count  of them, stitches not parallel to the axis
+//   partial_thickness_bites
+//                        count  passages not through the whole wall
+//   wide_bites           count  bites beyond the wide-bite limit
+//   unequal_spacing      count  gaps between neighbouring stitches off the mean
 
 #include "microsim/assessment/scoring/arc_metrics.h"
 #include "microsim/assessment/scoring/attempt.h"
+#include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/motion_metrics.h"
 #include "microsim/assessment/scoring/pierce_metrics.h"
 #include "microsim/assessment/scoring/stitch_metrics.h"
@@ -67,6 +75,7 @@ struct AttemptMetrics {
   std::vector<MetricValue> values;  ///< catalogue order
   std::vector<PierceMetrics> pierces;
   std::vector<StitchMetrics> stitches;
+  std::vector<EndProductError> endProduct;  ///< with default limits, without a leak test
   std::array<HandMotion, sim::kHandCount> hands;
 
   /// The value of `key`; nullopt for an unknown key.

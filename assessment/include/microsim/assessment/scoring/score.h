@@ -9,6 +9,7 @@
 // Proficiency is the pass mark on two consecutive Test attempts.
 
 #include "microsim/assessment/scoring/attempt.h"
+#include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/metrics.h"
 #include "microsim/assessment/scoring/pierce_metrics.h"
 #include "microsim/assessment/scoring/rubric.h"
@@ -40,6 +41,7 @@ struct AttemptScore {
   std::vector<std::string> neverEvents;   ///< feedback keys of the never-events that fired
   std::vector<PierceMetrics> pierces;
   std::vector<StitchMetrics> stitches;
+  std::vector<EndProductError> endProduct;  ///< the finished anastomosis's errors (end_product.h)
   bool truncated = false;                 ///< scored from a partial recording
 };
 
