@@ -9,13 +9,13 @@
 
 namespace microsim::testing {
 
-inline constexpr std::uint64_t kGoldenStitchHash = 0x9c33f9f3b4d546bbULL;
-inline constexpr const char* kGoldenStitchHashText = "9c33f9f3b4d546bb";
+inline constexpr std::uint64_t kGoldenStitchHash = 0x9bbda52ebc666486ULL;
+inline constexpr const char* kGoldenStitchHashText = "9bbda52ebc666486";
 
 /// The stitch's score on resources/rubrics/02_needle_entry.json (lesson 2) and on
 /// 03_single_stitch.json (lesson 3). The GUI's lesson flow and `microsim-cli score` are each
 /// held to these, so they agree with each other.
-inline constexpr double kGoldenStitchScoreNeedleEntry = 94.42268396392241;
+inline constexpr double kGoldenStitchScoreNeedleEntry = 94.42269314854562;
 inline constexpr double kGoldenStitchScoreSingleStitch = 66.28536405969467;
 
 }  // namespace microsim::testing

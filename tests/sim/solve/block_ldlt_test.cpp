@@ -4,6 +4,8 @@
 #include "solve/block_ldlt.h"
 #include "solve/block_system.h"
 
+#include <Eigen/Cholesky>
+
 #include <gtest/gtest.h>
 
 #include <random>

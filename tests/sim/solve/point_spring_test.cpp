@@ -3,6 +3,8 @@
 #include "microsim/sim/mesh/point_spring.h"
 #include "microsim/sim/mesh/spring_model.h"
 
+#include <Eigen/Geometry>
+
 #include <gtest/gtest.h>
 
 #include <array>
