@@ -30,5 +30,15 @@ print_stage_times() {
     total=$((total + seconds))
   done <"$MICROSIM_STAGE_TIMES"
   printf '  %-34s %3d min %02d s\n' "total" $((total / 60)) $((total % 60))
+  # kept beside the caches, so the next session on this machine can read what CI's stages took
+  # (a passing CI run's output is not kept anywhere else)
+  local log="${XDG_CACHE_HOME:-$HOME/.cache}/microsim/stage-times.log"
+  if mkdir -p "$(dirname "$log")" 2>/dev/null; then
+    {
+      printf '%s %s %s\n' "$(date -u +%FT%TZ)" "$1" "$(git rev-parse --short HEAD 2>/dev/null || echo '?')"
+      sed 's/^/  /' "$MICROSIM_STAGE_TIMES"
+      printf '  total\t%d\n' "$total"
+    } >>"$log" 2>/dev/null || true
+  fi
   rm -f "$MICROSIM_STAGE_TIMES"
 }
