@@ -1725,6 +1725,38 @@
         <source>%1: not applicable to this input; not counted.</source>
         <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
     </message>
+    <message>
+        <source>Cut both tails of every knot with the microscissors (T).</source>
+        <translation>Schneiden Sie beide Fadenenden jedes Knotens mit der Mikroschere (T) ab.</translation>
+    </message>
+    <message>
+        <source>Cut the tails shorter: about 1 mm from the knot.</source>
+        <translation>Schneiden Sie die Fadenenden kürzer: etwa 1 mm vom Knoten.</translation>
+    </message>
+    <message>
+        <source>Leave longer tails, about 1 mm: a tail cut at the knot lets it untie.</source>
+        <translation>Lassen Sie längere Fadenenden, etwa 1 mm: ein am Knoten abgeschnittenes Ende lässt ihn aufgehen.</translation>
+    </message>
+    <message>
+        <source>The finished anastomosis has errors: see the list of lapses.</source>
+        <translation>Die fertige Anastomose hat Fehler: siehe die Liste der Mängel.</translation>
+    </message>
+    <message>
+        <source>Tie a square or surgeon's knot: a double throw, then a single throw the other way.</source>
+        <translation>Knüpfen Sie einen Kreuzknoten oder chirurgischen Knoten: einen Doppelwurf, dann einen einfachen Wurf in der Gegenrichtung.</translation>
+    </message>
+    <message>
+        <source>Tie every stitch: wrap the thread round the forceps, grasp the tail, pull it through.</source>
+        <translation>Knüpfen Sie jede Naht: den Faden um die Pinzette wickeln, das kurze Ende fassen, durchziehen.</translation>
+    </message>
+    <message>
+        <source>Lay at least two throws, the second the other way round.</source>
+        <translation>Legen Sie mindestens zwei Würfe, den zweiten in der Gegenrichtung.</translation>
+    </message>
+    <message>
+        <source>A knot slipped: the stitch would open. Alternate the throws and snug each one down.</source>
+        <translation>Ein Knoten ist gerutscht: die Naht würde aufgehen. Wechseln Sie die Wurfrichtung und ziehen Sie jeden Wurf an.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2147,6 +2179,30 @@
     <message>
         <source>Unequally spaced stitches</source>
         <translation>Ungleich verteilte Nähte</translation>
+    </message>
+    <message>
+        <source>Knots tied</source>
+        <translation>Geknüpfte Knoten</translation>
+    </message>
+    <message>
+        <source>Secure knots</source>
+        <translation>Sichere Knoten</translation>
+    </message>
+    <message>
+        <source>Knots slipped</source>
+        <translation>Gerutschte Knoten</translation>
+    </message>
+    <message>
+        <source>Throws per knot</source>
+        <translation>Würfe pro Knoten</translation>
+    </message>
+    <message>
+        <source>Tails cut</source>
+        <translation>Abgeschnittene Fadenenden</translation>
+    </message>
+    <message>
+        <source>Cut-end length</source>
+        <translation>Länge der Fadenenden</translation>
     </message>
 </context>
 <context>
@@ -3096,6 +3152,38 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>%1: not applicable to this input; not counted.</source>
         <translation>%1: für diese Eingabe nicht anwendbar; nicht gewertet.</translation>
+    </message>
+    <message>
+        <source>Not every stitch was tied.</source>
+        <translation>Nicht jede Naht wurde geknüpft.</translation>
+    </message>
+    <message>
+        <source>Knots were not square or surgeon's knots.</source>
+        <translation>Die Knoten waren keine Kreuz- oder chirurgischen Knoten.</translation>
+    </message>
+    <message>
+        <source>Knots had too few throws.</source>
+        <translation>Die Knoten hatten zu wenige Würfe.</translation>
+    </message>
+    <message>
+        <source>Not every tail was cut.</source>
+        <translation>Nicht jedes Fadenende wurde abgeschnitten.</translation>
+    </message>
+    <message>
+        <source>Tails were left too long.</source>
+        <translation>Die Fadenenden blieben zu lang.</translation>
+    </message>
+    <message>
+        <source>Tails were cut too short.</source>
+        <translation>Die Fadenenden wurden zu kurz abgeschnitten.</translation>
+    </message>
+    <message>
+        <source>The finished anastomosis has lapses.</source>
+        <translation>Die fertige Anastomose hat Mängel.</translation>
+    </message>
+    <message>
+        <source>A knot slipped: the stitch would open.</source>
+        <translation>Ein Knoten ist gerutscht: die Naht würde aufgehen.</translation>
     </message>
 </context>
 <context>

@@ -1725,6 +1725,38 @@
         <source>%1: not applicable to this input; not counted.</source>
         <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
     </message>
+    <message>
+        <source>Cut both tails of every knot with the microscissors (T).</source>
+        <translation>Corte ambos cabos de cada nudo con las microtijeras (T).</translation>
+    </message>
+    <message>
+        <source>Cut the tails shorter: about 1 mm from the knot.</source>
+        <translation>Corte los cabos más cortos: a aproximadamente 1 mm del nudo.</translation>
+    </message>
+    <message>
+        <source>Leave longer tails, about 1 mm: a tail cut at the knot lets it untie.</source>
+        <translation>Deje cabos más largos, de aproximadamente 1 mm: un cabo cortado al ras del nudo permite que se suelte.</translation>
+    </message>
+    <message>
+        <source>The finished anastomosis has errors: see the list of lapses.</source>
+        <translation>La anastomosis terminada tiene errores: vea la lista de fallos.</translation>
+    </message>
+    <message>
+        <source>Tie a square or surgeon's knot: a double throw, then a single throw the other way.</source>
+        <translation>Haga un nudo cuadrado o de cirujano: una vuelta doble y luego una simple en sentido contrario.</translation>
+    </message>
+    <message>
+        <source>Tie every stitch: wrap the thread round the forceps, grasp the tail, pull it through.</source>
+        <translation>Anude cada punto: enrolle el hilo alrededor de la pinza, tome el cabo corto y tire de él.</translation>
+    </message>
+    <message>
+        <source>Lay at least two throws, the second the other way round.</source>
+        <translation>Haga al menos dos vueltas, la segunda en sentido contrario.</translation>
+    </message>
+    <message>
+        <source>A knot slipped: the stitch would open. Alternate the throws and snug each one down.</source>
+        <translation>Un nudo se deslizó: el punto se abriría. Alterne las vueltas y apriete cada una.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2147,6 +2179,30 @@
     <message>
         <source>Unequally spaced stitches</source>
         <translation>Puntos con separación desigual</translation>
+    </message>
+    <message>
+        <source>Knots tied</source>
+        <translation>Nudos anudados</translation>
+    </message>
+    <message>
+        <source>Secure knots</source>
+        <translation>Nudos seguros</translation>
+    </message>
+    <message>
+        <source>Knots slipped</source>
+        <translation>Nudos deslizados</translation>
+    </message>
+    <message>
+        <source>Throws per knot</source>
+        <translation>Vueltas por nudo</translation>
+    </message>
+    <message>
+        <source>Tails cut</source>
+        <translation>Cabos cortados</translation>
+    </message>
+    <message>
+        <source>Cut-end length</source>
+        <translation>Longitud de los cabos</translation>
     </message>
 </context>
 <context>
@@ -3096,6 +3152,38 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>%1: not applicable to this input; not counted.</source>
         <translation>%1: no aplicable a esta entrada; no se cuenta.</translation>
+    </message>
+    <message>
+        <source>Not every stitch was tied.</source>
+        <translation>No se anudaron todos los puntos.</translation>
+    </message>
+    <message>
+        <source>Knots were not square or surgeon's knots.</source>
+        <translation>Los nudos no eran cuadrados ni de cirujano.</translation>
+    </message>
+    <message>
+        <source>Knots had too few throws.</source>
+        <translation>Los nudos tenían muy pocas vueltas.</translation>
+    </message>
+    <message>
+        <source>Not every tail was cut.</source>
+        <translation>No se cortaron todos los cabos.</translation>
+    </message>
+    <message>
+        <source>Tails were left too long.</source>
+        <translation>Los cabos quedaron demasiado largos.</translation>
+    </message>
+    <message>
+        <source>Tails were cut too short.</source>
+        <translation>Los cabos se cortaron demasiado cortos.</translation>
+    </message>
+    <message>
+        <source>The finished anastomosis has lapses.</source>
+        <translation>La anastomosis terminada tiene fallos.</translation>
+    </message>
+    <message>
+        <source>A knot slipped: the stitch would open.</source>
+        <translation>Un nudo se deslizó: el punto se abriría.</translation>
     </message>
 </context>
 <context>

@@ -14,7 +14,7 @@ namespace {
 using KeyLabel = std::pair<std::string_view, const char*>;
 
 // metric key → label, in the scoring catalogue's order
-constexpr std::array<KeyLabel, 28> kMetricLabels{{
+constexpr std::array<KeyLabel, 34> kMetricLabels{{
     {"time", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Time")},
     {"path_length", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length")},
     {"path_length_left", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length, left hand")},
@@ -44,6 +44,12 @@ constexpr std::array<KeyLabel, 28> kMetricLabels{{
     {"partial_thickness_bites", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Partial-thickness bites")},
     {"wide_bites", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Wide bites")},
     {"unequal_spacing", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Unequally spaced stitches")},
+    {"knots_tied", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Knots tied")},
+    {"secure_knots", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Secure knots")},
+    {"knots_slipped", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Knots slipped")},
+    {"knot_throws", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Throws per knot")},
+    {"thread_cuts", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Tails cut")},
+    {"cut_end_length", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Cut-end length")},
 }};
 
 // pierce field key → label, in pierceFields() order

@@ -24,6 +24,15 @@ QString Text::in(const QString& language) const {
 
 namespace {
 
+// the conditions that are one count ≥ 1
+std::optional<ConditionKind> countedCondition(const QString& key) {
+  if (key == QLatin1String("pierces")) return ConditionKind::Pierces;
+  if (key == QLatin1String("stitches")) return ConditionKind::Stitches;
+  if (key == QLatin1String("knots")) return ConditionKind::Knots;
+  if (key == QLatin1String("cuts")) return ConditionKind::Cuts;
+  return std::nullopt;
+}
+
 // the first failure wins; every reader returns early once `error` is set
 class Reader {
  public:
@@ -152,8 +161,8 @@ class Reader {
       const std::optional<double> mm = number(value, here, 1e-6);
       if (!mm) return std::nullopt;
       c.millimetres = *mm;
-    } else if (key == QLatin1String("pierces") || key == QLatin1String("stitches")) {
-      c.kind = key == QLatin1String("pierces") ? ConditionKind::Pierces : ConditionKind::Stitches;
+    } else if (const std::optional<ConditionKind> counted = countedCondition(key)) {
+      c.kind = *counted;
       const std::optional<int> count = integer(value, here, 1);
       if (!count) return std::nullopt;
       c.count = *count;

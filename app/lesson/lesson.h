@@ -16,6 +16,9 @@
 //   {"stretch_mm": D}                     some tissue node moved at least D mm from rest
 //   {"pierces": N}                        the needle entered a wall at least N times
 //   {"stitches": N}                       N stitches: both ends passed through, in turn
+//   {"knots": N}                          N knots pulled tight (KnotTightened events)
+//   {"cuts": N}                           the scissors cut N tails: cuts that leave a cut end
+//                                         on a stitch (trimming loose thread does not count)
 //   {"target": {"index": I, "tolerance_mm": T}}   a pierce within T mm of guides[I].target
 // A guide's target is a point on the vessel (mm, scene frame); its direction the ideal needle
 // tangent there (unit after loading; perpendicular to the wall).
@@ -42,11 +45,11 @@ struct Text {
   QString in(const QString& language) const;
 };
 
-enum class ConditionKind { Grab, Stretch, Pierces, Stitches, Target };
+enum class ConditionKind { Grab, Stretch, Pierces, Stitches, Knots, Cuts, Target };
 
 struct Condition {
   ConditionKind kind = ConditionKind::Grab;
-  int count = 1;              ///< Grab: min nodes; Pierces, Stitches: how many; Target: guide index
+  int count = 1;  ///< Grab: min nodes; Pierces, Stitches, Knots, Cuts: how many; Target: guide index
   double millimetres = 0.0;   ///< Stretch: displacement (mm); Target: tolerance (mm)
 };
 

@@ -36,8 +36,10 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
     if (e.kind == sim::SceneEventKind::GraspEmpty) facts.emptyGraspHand = e.hand;
     if (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)
       facts.emptyGraspHand = -1;
+    if (e.kind == sim::SceneEventKind::KnotTightened) ++facts.knotsTightened;
     if (e.kind == sim::SceneEventKind::ThreadCut) {
       ++facts.threadCuts;
+      facts.tailsCut += e.value >= 0.0 ? 1 : 0;
       facts.lastCutEndMm = e.value;
     }
     if (e.kind == sim::SceneEventKind::ThreadTooShort) facts.threadTooShortMm = e.value;
@@ -63,6 +65,8 @@ bool conditionMet(const Condition& condition, const Lesson& lesson, const Attemp
     case ConditionKind::Stretch: return facts.maxDisplacementMm >= condition.millimetres;
     case ConditionKind::Pierces: return facts.pierceEntries >= condition.count;
     case ConditionKind::Stitches: return facts.stitches >= condition.count;
+    case ConditionKind::Knots: return facts.knotsTightened >= condition.count;
+    case ConditionKind::Cuts: return facts.tailsCut >= condition.count;
     case ConditionKind::Target:
       return condition.count >= 0 && condition.count < static_cast<int>(lesson.guides.size()) &&
              targetHit(lesson.guides[static_cast<std::size_t>(condition.count)], facts, condition.millimetres);

@@ -13,8 +13,10 @@
 //   target i  some pierce point (entry or exit) lies within the tolerance of guides[i];
 //   empty grasp  the hand whose latest grasp (either hand's GrabTissue, GripSuture or
 //             GraspEmpty) closed on nothing, or −1: for the page to say so until a grasp holds;
+//   knots     KnotTightened events (a knot pulled tight);
 //   cuts      ThreadCut events (the scissors cut the thread), and the latest one's cut-end
-//             length (mm; −1 when neither side of the cut reaches a pierce);
+//             length (mm; −1 when neither side of the cut reaches a pierce); tails, the cuts
+//             that left a cut end on a stitch (length ≥ 0);
 //   too short the thread the needle kept at the latest ThreadTooShort (mm), or −1: a cut left
 //             it too short to tie, and no thread grows back.
 
@@ -33,7 +35,9 @@ struct AttemptFacts {
   int stitches = 0;
   std::vector<sim::PierceEvent> pierces;
   int emptyGraspHand = -1;  ///< see "empty grasp" above
+  int knotsTightened = 0;         ///< see "knots" above
   int threadCuts = 0;             ///< see "cuts" above
+  int tailsCut = 0;               ///< see "cuts" above
   double lastCutEndMm = -1.0;     ///< mm, or −1 (see "cuts")
   double threadTooShortMm = -1.0; ///< mm, or −1 (see "too short")
 };

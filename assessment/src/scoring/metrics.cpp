@@ -10,7 +10,7 @@ namespace microsim::assessment {
 
 namespace {
 
-constexpr std::array<MetricInfo, 28> kCatalogue{{
+constexpr std::array<MetricInfo, 34> kCatalogue{{
     {"time", "s"},
     {"path_length", "mm"},
     {"path_length_left", "mm"},
@@ -39,6 +39,12 @@ constexpr std::array<MetricInfo, 28> kCatalogue{{
     {"partial_thickness_bites", "count"},
     {"wide_bites", "count"},
     {"unequal_spacing", "count"},
+    {"knots_tied", "count"},
+    {"secure_knots", "count"},
+    {"knots_slipped", "count"},
+    {"knot_throws", "count"},
+    {"thread_cuts", "count"},
+    {"cut_end_length", "mm"},
 }};
 
 // mean of the finite values `get` picks; NaN when there are none
@@ -115,6 +121,7 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
       std::count_if(p.begin(), p.end(), [](const auto& x) { return x.backWall; }));
   const std::optional<double> triangulation = triangulationErrorDeg(m.stitches);
   m.endProduct = endProductErrors(attempt);
+  const KnotSummary knots = knotSummary(attempt.events);
   const auto lapseCount = [&](EndProductErrorKind kind) {
     return static_cast<double>(countEndProductErrors(m.endProduct, kind));
   };
@@ -148,6 +155,12 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
       lapseCount(EndProductErrorKind::PartialThicknessBite),
       lapseCount(EndProductErrorKind::WideBite),
       lapseCount(EndProductErrorKind::UnequalSpacing),
+      static_cast<double>(knots.tightened),
+      static_cast<double>(knots.secure),
+      static_cast<double>(knots.slipped),
+      knots.meanThrows,
+      static_cast<double>(knots.cuts),
+      knots.meanCutEndMm,
   };
   m.values.reserve(kCatalogue.size());
   for (std::size_t i = 0; i < kCatalogue.size(); ++i)

@@ -49,17 +49,19 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
   const CliRun r = score({QStringLiteral("--recording"), kShippedStitch, QStringLiteral("--scene"), kShippedScene,
                           QStringLiteral("--json"), out});
   ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
-  EXPECT_TRUE(r.out.contains(QStringLiteral("66.3"))) << r.out.toStdString();
-  EXPECT_TRUE(r.out.contains(QStringLiteral("entry_angle.too_oblique"))) << r.out.toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("47.9"))) << r.out.toStdString();
+  // the stitch is neither tied nor cut, which lesson 3 asks for
+  for (const char* key : {"entry_angle.too_oblique", "knot.not_tied", "knot.not_secure", "cut.not_done"})
+    EXPECT_TRUE(r.out.contains(QLatin1String(key))) << key << "\n" << r.out.toStdString();
   const QJsonObject doc = readScoreJson(out);
   EXPECT_NEAR(doc.value(QStringLiteral("score")).toDouble(), kStitchScore, 1e-9);
   EXPECT_FALSE(doc.value(QStringLiteral("passed")).toBool());
   EXPECT_FALSE(doc.value(QStringLiteral("truncated")).toBool());
   EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("id")).toString(),
             QStringLiteral("03_single_stitch"));
-  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("version")).toInt(), 1);
+  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("version")).toInt(), 2);
   const QJsonArray metrics = doc.value(QStringLiteral("metrics")).toArray();
-  ASSERT_EQ(metrics.size(), 9);
+  ASSERT_EQ(metrics.size(), 15);
   for (const QJsonValue& m : metrics)
     for (const char* field : {"key", "value", "unit", "target", "points", "feedback"})
       EXPECT_TRUE(m.toObject().contains(QLatin1String(field))) << field;
@@ -235,7 +237,7 @@ TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {
   EXPECT_EQ(attempts[0].id, id);
   EXPECT_EQ(attempts[0].lesson, QStringLiteral("03_single_stitch"));
   EXPECT_EQ(attempts[0].rubricId, QStringLiteral("03_single_stitch"));
-  EXPECT_EQ(attempts[0].rubricVersion, 1);
+  EXPECT_EQ(attempts[0].rubricVersion, 2);
   ASSERT_TRUE(attempts[0].score.has_value());
   EXPECT_NEAR(*attempts[0].score, kStitchScore, 1e-9);
 }

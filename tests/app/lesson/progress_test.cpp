@@ -10,6 +10,14 @@ namespace {
 
 const std::string kSource = MICROSIM_SOURCE_DIR;
 
+sim::SceneEvent sceneEvent(sim::SceneEventKind kind, int hand, double value = 0.0) {
+  sim::SceneEvent e;
+  e.kind = kind;
+  e.hand = hand;
+  e.value = value;
+  return e;
+}
+
 sim::PierceEvent pierce(int end, bool entry) {
   sim::PierceEvent p;
   p.end = end;
@@ -61,12 +69,7 @@ TEST(LessonProgress, FactsComeFromEvents) {
 }
 
 TEST(LessonProgress, AnEmptyGraspIsAFactUntilAGraspHolds) {
-  const auto event = [](sim::SceneEventKind kind, int hand) {
-    sim::SceneEvent e;
-    e.kind = kind;
-    e.hand = hand;
-    return e;
-  };
+  const auto event = [](sim::SceneEventKind kind, int hand) { return sceneEvent(kind, hand); };
   using K = sim::SceneEventKind;
   EXPECT_EQ(collectFacts({}, {}, 0.0).emptyGraspHand, -1);
   EXPECT_EQ(collectFacts({event(K::GraspEmpty, 1)}, {}, 0.0).emptyGraspHand, 1);
@@ -81,13 +84,7 @@ TEST(LessonProgress, AnEmptyGraspIsAFactUntilAGraspHolds) {
 }
 
 TEST(LessonProgress, CutsCountAndTheLatestCutEndAndTooShortAreKept) {
-  const auto cutEvent = [](sim::SceneEventKind kind, double value) {
-    sim::SceneEvent e;
-    e.kind = kind;
-    e.hand = 1;
-    e.value = value;
-    return e;
-  };
+  const auto cutEvent = [](sim::SceneEventKind kind, double value) { return sceneEvent(kind, 1, value); };
   using K = sim::SceneEventKind;
   const AttemptFacts none = collectFacts({}, {}, 0.0);
   EXPECT_EQ(none.threadCuts, 0);
@@ -105,8 +102,32 @@ TEST(LessonProgress, CutsCountAndTheLatestCutEndAndTooShortAreKept) {
   EXPECT_EQ(loose.threadTooShortMm, 1.4);
 }
 
-// the shipped stitch recording completes lessons 02 and 03 (their targets sit where it pierces)
-TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
+TEST(LessonProgress, AKnotStepWaitsForAKnotPulledTightAndACutStepForTails) {
+  const auto event = [](sim::SceneEventKind kind, double value) { return sceneEvent(kind, -1, value); };
+  using K = sim::SceneEventKind;
+  Lesson l;
+  l.steps.push_back({{}, {ConditionKind::Knots, 1, 0.0}});
+  l.steps.push_back({{}, {ConditionKind::Cuts, 2, 0.0}});
+  // a throw formed is not yet a knot; trimming loose thread (cut end −1) is not a tail
+  EXPECT_EQ(stepsDone(l, collectFacts({event(K::ThrowFormed, 0.0)}, {}, 0.0)), 0);
+  const AttemptFacts tied = collectFacts({event(K::ThrowFormed, 0.0), event(K::KnotTightened, 900.0)}, {}, 0.0);
+  EXPECT_EQ(tied.knotsTightened, 1);
+  EXPECT_EQ(stepsDone(l, tied), 1);
+  const AttemptFacts trimmed =
+      collectFacts({event(K::KnotTightened, 900.0), event(K::ThreadCut, 1.1), event(K::ThreadCut, -1.0)}, {}, 0.0);
+  EXPECT_EQ(trimmed.threadCuts, 2);
+  EXPECT_EQ(trimmed.tailsCut, 1);
+  EXPECT_EQ(stepsDone(l, trimmed), 1);
+  const AttemptFacts cut =
+      collectFacts({event(K::KnotTightened, 900.0), event(K::ThreadCut, 1.1), event(K::ThreadCut, 0.9)}, {}, 0.0);
+  EXPECT_EQ(stepsDone(l, cut), 2);
+  // tails cut before any knot do not tick the cut step off: steps go in order
+  EXPECT_EQ(stepsDone(l, collectFacts({event(K::ThreadCut, 1.1), event(K::ThreadCut, 0.9)}, {}, 0.0)), 0);
+}
+
+// the shipped stitch recording completes lesson 02, and lesson 03's stitch steps, not its knot
+// and cut (it ties no knot); their targets sit where it pierces
+TEST(LessonProgress, TheShippedStitchCompletesLessonTwoAndTheStitchOfLessonThree) {
   sim::Recording recording;
   ASSERT_TRUE(sim::readRecording(kSource + "/resources/recordings/stitch.msrec", recording).ok());
   for (const char* id : {"02_needle_entry", "03_single_stitch"}) {
@@ -124,7 +145,11 @@ TEST(LessonProgress, TheShippedStitchCompletesLessonsTwoAndThree) {
     }
     const AttemptFacts facts = collectFacts(scene.events(), scene.pierces(), 0.0);
     EXPECT_EQ(doneBeforeEnd, 0) << id;
-    EXPECT_EQ(stepsDone(lesson, facts), static_cast<int>(lesson.steps.size())) << id;
+    const bool knotted = std::string(id) == "03_single_stitch";
+    EXPECT_EQ(stepsDone(lesson, facts), static_cast<int>(lesson.steps.size()) - (knotted ? 2 : 0)) << id;
+    if (knotted) {
+      EXPECT_EQ(lesson.steps[3].success.kind, ConditionKind::Knots);
+    }
     for (bool hit : guidesHit(lesson, facts, 0.1)) EXPECT_TRUE(hit) << id;
   }
 }

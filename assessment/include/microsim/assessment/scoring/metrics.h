@@ -37,10 +37,17 @@
 //                        count  passages not through the whole wall
 //   wide_bites           count  bites beyond the wide-bite limit
 //   unequal_spacing      count  gaps between neighbouring stitches off the mean
+//   knots_tied           count  knots pulled tight (knot_metrics.h)
+//   secure_knots         count  of them, square or surgeon's knots that did not slip
+//   knots_slipped        count  KnotSlipped events
+//   knot_throws          count  mean throws of the knots pulled tight (NaN without one)
+//   thread_cuts          count  cuts that left a cut end on a stitch
+//   cut_end_length       mm     mean cut-end length of those cuts (NaN without one)
 
 #include "microsim/assessment/scoring/arc_metrics.h"
 #include "microsim/assessment/scoring/attempt.h"
 #include "microsim/assessment/scoring/end_product.h"
+#include "microsim/assessment/scoring/knot_metrics.h"
 #include "microsim/assessment/scoring/motion_metrics.h"
 #include "microsim/assessment/scoring/pierce_metrics.h"
 #include "microsim/assessment/scoring/stitch_metrics.h"
