@@ -28,6 +28,7 @@ namespace {
 std::optional<ConditionKind> countedCondition(const QString& key) {
   if (key == QLatin1String("pierces")) return ConditionKind::Pierces;
   if (key == QLatin1String("stitches")) return ConditionKind::Stitches;
+  if (key == QLatin1String("throws")) return ConditionKind::Throws;
   if (key == QLatin1String("knots")) return ConditionKind::Knots;
   if (key == QLatin1String("cuts")) return ConditionKind::Cuts;
   return std::nullopt;

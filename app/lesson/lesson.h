@@ -16,6 +16,7 @@
 //   {"stretch_mm": D}                     some tissue node moved at least D mm from rest
 //   {"pierces": N}                        the needle entered a wall at least N times
 //   {"stitches": N}                       N stitches: both ends passed through, in turn
+//   {"throws": N}                         N throws formed in the thread (ThrowFormed events)
 //   {"knots": N}                          N knots pulled tight (KnotTightened events)
 //   {"cuts": N}                           the scissors cut N tails: cuts that leave a cut end
 //                                         on a stitch (trimming loose thread does not count)
@@ -45,11 +46,11 @@ struct Text {
   QString in(const QString& language) const;
 };
 
-enum class ConditionKind { Grab, Stretch, Pierces, Stitches, Knots, Cuts, Target };
+enum class ConditionKind { Grab, Stretch, Pierces, Stitches, Throws, Knots, Cuts, Target };
 
 struct Condition {
   ConditionKind kind = ConditionKind::Grab;
-  int count = 1;  ///< Grab: min nodes; Pierces, Stitches, Knots, Cuts: how many; Target: guide index
+  int count = 1;  ///< Grab: min nodes; Pierces ... Cuts: how many; Target: guide index
   double millimetres = 0.0;   ///< Stretch: displacement (mm); Target: tolerance (mm)
 };
 

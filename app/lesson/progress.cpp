@@ -36,6 +36,7 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
     if (e.kind == sim::SceneEventKind::GraspEmpty) facts.emptyGraspHand = e.hand;
     if (e.kind == sim::SceneEventKind::GrabTissue || e.kind == sim::SceneEventKind::GripSuture)
       facts.emptyGraspHand = -1;
+    if (e.kind == sim::SceneEventKind::ThrowFormed) ++facts.throwsFormed;
     if (e.kind == sim::SceneEventKind::KnotTightened) ++facts.knotsTightened;
     if (e.kind == sim::SceneEventKind::ThreadCut) {
       ++facts.threadCuts;
@@ -65,6 +66,7 @@ bool conditionMet(const Condition& condition, const Lesson& lesson, const Attemp
     case ConditionKind::Stretch: return facts.maxDisplacementMm >= condition.millimetres;
     case ConditionKind::Pierces: return facts.pierceEntries >= condition.count;
     case ConditionKind::Stitches: return facts.stitches >= condition.count;
+    case ConditionKind::Throws: return facts.throwsFormed >= condition.count;
     case ConditionKind::Knots: return facts.knotsTightened >= condition.count;
     case ConditionKind::Cuts: return facts.tailsCut >= condition.count;
     case ConditionKind::Target:

@@ -13,6 +13,7 @@
 //   target i  some pierce point (entry or exit) lies within the tolerance of guides[i];
 //   empty grasp  the hand whose latest grasp (either hand's GrabTissue, GripSuture or
 //             GraspEmpty) closed on nothing, or −1: for the page to say so until a grasp holds;
+//   throws    ThrowFormed events (a throw laid in the thread);
 //   knots     KnotTightened events (a knot pulled tight);
 //   cuts      ThreadCut events (the scissors cut the thread), and the latest one's cut-end
 //             length (mm; −1 when neither side of the cut reaches a pierce); tails, the cuts
@@ -35,6 +36,7 @@ struct AttemptFacts {
   int stitches = 0;
   std::vector<sim::PierceEvent> pierces;
   int emptyGraspHand = -1;  ///< see "empty grasp" above
+  int throwsFormed = 0;           ///< see "throws" above
   int knotsTightened = 0;         ///< see "knots" above
   int threadCuts = 0;             ///< see "cuts" above
   int tailsCut = 0;               ///< see "cuts" above

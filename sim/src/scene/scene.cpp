@@ -123,6 +123,9 @@ Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
     if (def_.needle->initialShape.cols() == suture_->nodeCount()) {
       sutureState_.x = def_.needle->initialShape;
       sutureState_.xPrev = def_.needle->initialShape;
+      // holes already made (a stay stitch): no PierceEvent stands for them
+      sutureState_.pierces = def_.needle->initialPierces;
+      suturePierceEvents_.assign(def_.needle->initialPierces.size(), -1);
     }
     knots_.emplace(def_.needle->knots);
     sutureSolver_ = suture::makeSutureSolver(def_.needle->solver);

@@ -256,7 +256,7 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
               {"shape", "radius", "length", "thread_length", "links", "needle_links",
                "break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
                "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness", "puncture_force",
-               "min_tie_length"}))
+               "min_tie_length", "stay_stitch"}))
     return false;
   suture::SutureDef& s = out.suture;
   s.links = 60;
@@ -294,6 +294,16 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
     if (!string(*f, key(path, "solver"), out.solver)) return false;
     if (!suture::makeSutureSolver(out.solver))
       return fail(SceneErrorKind::InvalidValue, key(path, "solver"));
+  }
+
+  if (const json* f = field(v, "stay_stitch")) {
+    const std::string sp = key(path, "stay_stitch");
+    StayStitchDef stitch;
+    if (!object(*f, sp, {"angle_deg", "bite_walls", "tail_mm"}) ||
+        !optNumber(*f, sp, "angle_deg", stitch.angleDeg) || !optPositive(*f, sp, "bite_walls", stitch.biteWalls) ||
+        !optPositive(*f, sp, "tail_mm", stitch.tailMm))
+      return false;
+    out.stayStitch = stitch;
   }
 
   // the needle's pose at the start
@@ -423,6 +433,15 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
     }
   }
   out.tissue.model.finalize();
+
+  // a stitch already placed: its thread laid once the vessels are built
+  if (out.needle && out.needle->stayStitch) {
+    const auto laid = layStayStitch(out, *out.needle->stayStitch);
+    if (!std::holds_alternative<LaidStayStitch>(laid))
+      return fail(SceneErrorKind::InvalidValue, "tools.needle.stay_stitch");
+    out.needle->initialShape = std::get<LaidStayStitch>(laid).shape;
+    out.needle->initialPierces = std::get<LaidStayStitch>(laid).pierces;
+  }
   return true;
 }
 

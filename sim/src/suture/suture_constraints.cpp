@@ -11,7 +11,9 @@ namespace microsim::sim::suture {
 
 namespace {
 
-bool activePierce(const SutureModel& model, const Pierce& p) { return p.node >= model.swage(); }
+bool activePierce(const SutureModel& model, const Pierce& p) {
+  return p.node >= model.swage();
+}
 
 // stretch of the side from pierce node c to neighbour (node q at Q); free end: 0
 double sideStretch(const SutureModel& model, int c, const Vec3& p, const ChainConstraint* q) {
@@ -66,6 +68,51 @@ Eigen::Matrix3d crossCovariance(const Points& r, const Vec3& rc, const Points& x
   return h;
 }
 
+// Draws the thread one node through the run of pierces that starts at cs[k] and goes on in
+// direction `step` (+1: towards higher nodes, −1: lower) while each sits on the node next to
+// the one before (the holes of a wall thinner than a link) or the thread between them is
+// taut (it has no slack to give the hole behind): every pierce of the run moves one
+// node that way, so the side behind cs[k] gains a link and the side ahead of the run loses
+// one; the sides within the run keep theirs. Done only when it lowers the larger stretch of
+// those two outer sides, and when the node past the run is free thread (not a grip, not past
+// the piece's end, not the needle). `behind` is cs[k]'s neighbour on the far side from `step`
+// as slidePierces measures it (the swage for a grip on the needle). True when done.
+bool pushRun(const SutureModel& model, std::vector<ChainConstraint>& cs, std::size_t k, int step,
+             const ChainConstraint* behind, const Piece& piece, double slideTolerance) {
+  const auto index = [&](std::size_t j) { return static_cast<std::ptrdiff_t>(j) + step; };
+  const auto inRange = [&](std::ptrdiff_t j) {
+    return j >= 0 && j < static_cast<std::ptrdiff_t>(cs.size());
+  };
+  // the run: on through each next pierce that sits on the next node, or whose side from the
+  // one before would be taut once that one moved (the thread between them has none to give)
+  std::size_t last = k;
+  while (inRange(index(last))) {
+    const ChainConstraint& next = cs[static_cast<std::size_t>(index(last))];
+    const bool adjacent = next.node == cs[last].node + step;
+    const bool taut =
+        sideStretch(model, cs[last].node + step, cs[last].position, &next) > 1.0 + slideTolerance;
+    if (!adjacent && !taut) break;
+    if (next.hard) return false;
+    last = static_cast<std::size_t>(index(last));
+  }
+  const ChainConstraint* ahead =
+      inRange(index(last)) ? &cs[static_cast<std::size_t>(index(last))] : nullptr;
+  const int target = cs[last].node + step;
+  if (target > piece.last || target < std::max(piece.first, model.swage())) return false;
+  if (ahead && (ahead->node - target) * step <= 0) return false;
+  const auto stretchAt = [&](int shift) {
+    const double back = sideStretch(model, cs[k].node + shift, cs[k].position, behind);
+    const double front = sideStretch(model, cs[last].node + shift, cs[last].position, ahead);
+    return std::max(back, front);
+  };
+  if (stretchAt(step) >= stretchAt(0)) return false;
+  for (std::size_t j = k;; j = static_cast<std::size_t>(index(j))) {
+    cs[j].node += step;
+    if (j == last) break;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool gripHoldsNeedle(const SutureModel& model, const Grip& grip) {
@@ -81,7 +128,8 @@ Vec3 gripPoint(const Points& x, const Grip& grip) {
 std::array<Vec3, 2> clampedLinkEnds(const SutureModel& model, const Grip& grip, const Vec3& point,
                                     const Vec3& direction) {
   const double length = model.rest(grip.node);
-  return {point - grip.fraction * length * direction, point + (1.0 - grip.fraction) * length * direction};
+  return {point - grip.fraction * length * direction,
+          point + (1.0 - grip.fraction) * length * direction};
 }
 
 std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const SutureState& state,
@@ -147,8 +195,8 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
       const ChainConstraint* leftEnd = left && left->node < swage ? &swageEnd : left;
       // the node may not pass its neighbours (pierces keep their order), nor leave the thread:
       // the rigid needle cannot slide through a pierce backwards
-      const int lo = std::max(left ? left->node + 1 : piece.first, swage);
-      const int hi = right ? right->node - 1 : piece.last;
+      const auto lo = [&] { return std::max(left ? left->node + 1 : piece.first, swage); };
+      const auto hi = [&] { return right ? right->node - 1 : piece.last; };
       const auto worst = [&](int c) {
         return std::max(sideStretch(model, c, me.position, leftEnd),
                         sideStretch(model, c, me.position, right));
@@ -160,15 +208,35 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
         const double sr = sideStretch(model, me.node, me.position, right);
         if (std::max(sl, sr) <= 1.0 + slideTolerance) break;
         const int next = sr > sl ? me.node - 1 : me.node + 1;
-        if (next < lo || next > hi) {
-          // past a free end the suture leaves the pierce
-          const bool freeEnd = (next < lo && !left && lo == piece.first) ||
-                               (next > hi && !right);
-          out = freeEnd;
-          break;
+        if (next >= lo() && next <= hi() && worst(next) < worst(me.node)) {
+          me.node = next;
+          ++slides;
+          continue;
         }
-        if (worst(next) >= worst(me.node)) break;
-        me.node = next;
+        if (next < lo() || next > hi()) {
+          // past a free end the suture leaves the pierce
+          out = (next < lo() && !left && lo() == piece.first) || (next > hi() && !right);
+          if (out) break;
+        }
+        // alone it cannot slide: the thread has to go through the next hole as well (the side
+        // to it would be over-stretched: a wall's two holes, a taut stretch across the
+        // lumen), so it is drawn through both together, and on through the run (pushRun). A
+        // side to a pierce on the neighbouring node spans the wall between two holes: no
+        // slide of this hole alone shortens it (a wall thicker than a link keeps it stretched,
+        // and the rule above has already tried to give it a second link), so it does not
+        // decide which way the thread goes; the side beyond does.
+        const auto pulling = [&](const ChainConstraint* q, double stretch) {
+          return q && !q->hard && std::abs(q->node - me.node) == 1 ? 1.0 : stretch;
+        };
+        const double pl = pulling(left, sl);
+        const double pr = pulling(right, sr);
+        if (std::max(pl, pr) <= 1.0 + slideTolerance) break;
+        const int step = pr > pl ? -1 : 1;
+        const ChainConstraint* ahead = step < 0 ? left : right;
+        if (!ahead || ahead->hard) break;
+        if (!pushRun(model, cs, k, step, step > 0 ? leftEnd : right, piece, slideTolerance)) break;
+        for (const ChainConstraint& c : cs)
+          if (!c.hard) state.pierces[static_cast<std::size_t>(c.source)].node = c.node;
         ++slides;
       }
       state.pierces[static_cast<std::size_t>(me.source)].node = me.node;

@@ -32,7 +32,7 @@ class StatusWords : public testing::InstructorHistoryTest {
     ana_ = assessment::PeopleStore(history_).addTrainee(QStringLiteral("Ana")).value_or(0);
     ASSERT_NE(ana_, 0);
     lessons_ = lesson::loadLessons(lesson::lessonsDirectory());
-    ASSERT_EQ(lessons_.size(), 5u);
+    ASSERT_EQ(lessons_.size(), 6u);
   }
 
   void store(const QString& lesson, AttemptMode mode, bool pass) {

@@ -71,7 +71,7 @@ TEST(MainWindow, HasMenusAndReportsTheDatabase) {
   EXPECT_TRUE(titles.contains(QStringLiteral("&Help")));
   EXPECT_TRUE(w.window->databaseMessage().contains(QStringLiteral("schema"))) << w.window->databaseMessage().toStdString();
   EXPECT_EQ(w.window->currentPage(), w.window->signInPage());
-  EXPECT_EQ(w.window->lessons().size(), 5u);
+  EXPECT_EQ(w.window->lessons().size(), 6u);
 }
 
 TEST(MainWindow, QuitActionClosesTheWindow) {

@@ -67,9 +67,9 @@ TEST(StartCheck, StartsWithTheShippedLessonsFoundThroughTheBuildTree) {
   const StartCheckRun run = runStartCheck(home, database);
   ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
   EXPECT_TRUE(run.err.isEmpty()) << run.err.toStdString();
-  // the five lessons, from <build dir>/share/microsim, which is the source tree's resources/
+  // the six lessons, from <build dir>/share/microsim, which is the source tree's resources/
   const QString lessons = QFileInfo(QStringLiteral(MICROSIM_GUI_PATH)).dir().filePath(QStringLiteral("../share/microsim/lessons"));
-  EXPECT_EQ(run.out.trimmed(), QStringLiteral("microsim started: 5 lesson(s) from %1, history %2")
+  EXPECT_EQ(run.out.trimmed(), QStringLiteral("microsim started: 6 lesson(s) from %1, history %2")
                                    .arg(QDir::cleanPath(lessons), database));
   EXPECT_EQ(QFileInfo(lessons).canonicalFilePath(),
             QFileInfo(QStringLiteral(MICROSIM_SOURCE_DIR "/resources/lessons")).canonicalFilePath());
@@ -98,7 +98,7 @@ TEST(StartCheck, FailsWhenALessonCannotBeRead) {
   const StartCheckRun run = runStartCheck(home, home.filePath(QStringLiteral("history.sqlite")), resources);
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_EQ(run.err.trimmed(),
-            QStringLiteral("microsim --check-start: 4 of 5 lesson file(s) in %1/lessons could be read").arg(resources));
+            QStringLiteral("microsim --check-start: 5 of 6 lesson file(s) in %1/lessons could be read").arg(resources));
 }
 
 TEST(StartCheck, StartsFromACopiedResourcesFolder) {
@@ -106,7 +106,7 @@ TEST(StartCheck, StartsFromACopiedResourcesFolder) {
   const QString resources = startCheckResourcesCopy(home);
   const StartCheckRun run = runStartCheck(home, home.filePath(QStringLiteral("history.sqlite")), resources);
   ASSERT_EQ(run.exitCode, 0) << run.err.toStdString();
-  EXPECT_TRUE(run.out.startsWith(QStringLiteral("microsim started: 5 lesson(s) from %1/lessons,").arg(resources)))
+  EXPECT_TRUE(run.out.startsWith(QStringLiteral("microsim started: 6 lesson(s) from %1/lessons,").arg(resources)))
       << run.out.toStdString();
 }
 

@@ -110,6 +110,10 @@ TEST(LessonProgress, AKnotStepWaitsForAKnotPulledTightAndACutStepForTails) {
   l.steps.push_back({{}, {ConditionKind::Cuts, 2, 0.0}});
   // a throw formed is not yet a knot; trimming loose thread (cut end −1) is not a tail
   EXPECT_EQ(stepsDone(l, collectFacts({event(K::ThrowFormed, 0.0)}, {}, 0.0)), 0);
+  Lesson throws;
+  throws.steps.push_back({{}, {ConditionKind::Throws, 2, 0.0}});
+  EXPECT_EQ(stepsDone(throws, collectFacts({event(K::ThrowFormed, 0.0)}, {}, 0.0)), 0);
+  EXPECT_EQ(stepsDone(throws, collectFacts({event(K::ThrowFormed, 0.0), event(K::ThrowFormed, 0.0)}, {}, 0.0)), 1);
   const AttemptFacts tied = collectFacts({event(K::ThrowFormed, 0.0), event(K::KnotTightened, 900.0)}, {}, 0.0);
   EXPECT_EQ(tied.knotsTightened, 1);
   EXPECT_EQ(stepsDone(l, tied), 1);

@@ -19,7 +19,7 @@ SceneError sceneDefErrorOf(const std::string& text) {
 
 TEST(SceneDef, EveryShippedSceneLoads) {
   for (const char* name : {"anastomosis.json", "fine_anastomosis.json", "single_vessel.json",
-                           "lattice.json", "spring_mesh.json"}) {
+                           "lattice.json", "spring_mesh.json", "instrument_tie.json"}) {
     SceneDefLoad load = loadSceneDef(kShippedScenes + name);
     if (auto* e = std::get_if<SceneError>(&load))
       ADD_FAILURE() << name << ": kind " << int(e->kind) << " at " << e->line << ":" << e->column

@@ -42,7 +42,8 @@ TEST(SutureGrips, AGripBetweenTwoNodesHoldsBothAndOnTheNeedleHoldsTheNeedle) {
   g.node = 30;
   g.fraction = 0.5;
   g.position = Vec3(9, 9, 9);
-  const std::vector<ChainConstraint> between = pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
+  const std::vector<ChainConstraint> between =
+      pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
   ASSERT_EQ(between.size(), 2u);
   EXPECT_EQ(between[0].node, 30);
   EXPECT_EQ(between[1].node, 31);
@@ -52,14 +53,17 @@ TEST(SutureGrips, AGripBetweenTwoNodesHoldsBothAndOnTheNeedleHoldsTheNeedle) {
   EXPECT_EQ(gripPoint(s.x, g), Vec3(0.5 * s.x.col(30) + 0.5 * s.x.col(31)));
   // on a node: that node at the grip's position
   g.fraction = 0.0;
-  const std::vector<ChainConstraint> on = pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
+  const std::vector<ChainConstraint> on =
+      pieceConstraints(m, s, std::span<const Grip>(&g, 1), whole);
   ASSERT_EQ(on.size(), 1u);
   EXPECT_EQ(on[0].position, g.position);
   // which grips hold the rigid needle: its links and the swage node, not the thread beyond
   const int swage = m.swage();
-  EXPECT_TRUE(gripHoldsNeedle(m, Grip{swage - 1, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.9}));
+  EXPECT_TRUE(
+      gripHoldsNeedle(m, Grip{swage - 1, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.9}));
   EXPECT_TRUE(gripHoldsNeedle(m, Grip{swage, Vec3::Zero()}));
-  EXPECT_FALSE(gripHoldsNeedle(m, Grip{swage, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.1}));
+  EXPECT_FALSE(
+      gripHoldsNeedle(m, Grip{swage, Vec3::Zero(), false, Eigen::Matrix3d::Identity(), 0.1}));
   EXPECT_FALSE(gripHoldsNeedle(m, Grip{swage + 1, Vec3::Zero()}));
 }
 
@@ -205,6 +209,25 @@ TEST(SuturePierces, ActivePiercesPulledTowardsEachOtherDoNotCross) {
   ASSERT_EQ(s.pierces.size(), 2u);
   EXPECT_GT(s.pierces[0].node, s.pierces[1].node);
   EXPECT_GT(s.pierces[1].node, swage);
+}
+
+TEST(SuturePierces, AStitchsFourHolesAreDrawnThroughTogetherWhenOneEndIsPulled) {
+  const SutureModel m = needleAndThread();
+  SutureState s = SutureState::laidOut(m);
+  const int swage = m.swage();
+  // a stitch on a straight, taut thread: a wall's two holes on neighbouring nodes (a wall
+  // thinner than a link), the lumen across 5 links, the other wall; the tail free beyond
+  const int holes[4] = {swage + 27, swage + 26, swage + 21, swage + 20};
+  for (int node : holes) s.pierces.push_back(pierceThrough(node, s.x.col(node)));
+  // the thread taken 10 links before the stitch and drawn 0.35 mm back along itself: it needs
+  // 14 links to the stitch, which the tail gives through all four holes
+  const Vec3 along = (s.x.col(swage + 20) - s.x.col(swage + 10)).normalized();
+  const Grip grip{swage + 10, s.x.col(swage + 10) - 0.35 * along};
+  std::vector<SutureEvent> events;
+  EXPECT_EQ(slideAtDefaultTolerance(m, s, std::span<const Grip>(&grip, 1), events), 4);
+  EXPECT_TRUE(events.empty());
+  ASSERT_EQ(s.pierces.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(s.pierces[k].node, holes[k] + 4) << k;
 }
 
 }  // namespace

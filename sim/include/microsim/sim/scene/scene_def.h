@@ -52,6 +52,7 @@
 #include "microsim/sim/mesh/vessel.h"
 #include "microsim/sim/scene/input_frame.h"
 #include "microsim/sim/scene/spring_scene.h"
+#include "microsim/sim/scene/stay_stitch.h"
 #include "microsim/sim/solve/solver.h"
 #include "microsim/sim/suture/knot_tracker.h"
 #include "microsim/sim/suture/suture_coupling.h"
@@ -124,6 +125,13 @@ struct NeedleDef {
   /// already laid (a knot tied, a stitch placed); empty (or another size): laid out straight
   /// at `pose`
   suture::Points initialShape{3, 0};
+  /// holes the thread already passes when the scene starts, in the order a needle makes them
+  /// (path order, suture_constraints.h), each at its node of `initialShape`; they carry no
+  /// PierceEvent
+  std::vector<suture::Pierce> initialPierces;
+  /// a stitch already placed (stay_stitch.h): the loader lays the thread (`initialShape`,
+  /// `initialPierces`) from it
+  std::optional<StayStitchDef> stayStitch;
   /// how the thread is read for a knot each step (events: throws formed, tightened, slipped)
   suture::KnotTrackerDef knots;
 };

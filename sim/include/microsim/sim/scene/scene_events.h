@@ -27,7 +27,9 @@ enum class SceneEventKind : std::uint8_t {
   PierceExit,     ///< the needle tip left a wall (`index` into Scene::pierces())
   Cut,            ///< the scalpel removed `count` links
   SutureBreak,    ///< the suture broke at link `index`
-  SuturePulledOut,///< the suture slid out of a pierce (`index` into Scene::pierces())
+  /// the suture slid out of a pierce (`index` into Scene::pierces(); −1 for a hole the scene
+  /// started with, a stay stitch's)
+  SuturePulledOut,
   /// the needle left a pierce before the thread reached it (drawn back, or moved off the
   /// hole by more than SutureDef::pierceReleaseDistance): the suture does not pass there
   /// (`index` into Scene::pierces())
