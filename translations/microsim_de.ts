@@ -1087,46 +1087,6 @@
         <translation><numerusform>der Knoten rutscht: %n Wurf bleibt, er ist %1</numerusform><numerusform>der Knoten rutscht: %n Würfe bleiben, er ist %1</numerusform></translation>
     </message>
     <message>
-        <source>suture-line disruption</source>
-        <translation>Unterbrechung der Nahtreihe</translation>
-    </message>
-    <message>
-        <source>back-wall stitch</source>
-        <translation>Hinterwandnaht</translation>
-    </message>
-    <message>
-        <source>oblique stitch</source>
-        <translation>schräge Naht</translation>
-    </message>
-    <message>
-        <source>wide bite</source>
-        <translation>zu weiter Stich</translation>
-    </message>
-    <message>
-        <source>partial-thickness bite</source>
-        <translation>Stich nicht durch die ganze Wand</translation>
-    </message>
-    <message>
-        <source>unequal spacing</source>
-        <translation>ungleicher Nahtabstand</translation>
-    </message>
-    <message>
-        <source>wall tear</source>
-        <translation>Wandeinriss</translation>
-    </message>
-    <message>
-        <source>over-tight stitch</source>
-        <translation>zu fest geknüpfte Naht</translation>
-    </message>
-    <message>
-        <source>thread in the lumen</source>
-        <translation>Faden im Lumen</translation>
-    </message>
-    <message>
-        <source>large edge overlap</source>
-        <translation>große Randüberlappung</translation>
-    </message>
-    <message>
         <source>end product</source>
         <translation>Endergebnis</translation>
     </message>
@@ -3519,6 +3479,49 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>The 3D mouse's daemon (spacenavd) closed the connection.</source>
         <translation>Der Dienst der 3D-Maus (spacenavd) hat die Verbindung geschlossen.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::i18n::EndProductWords</name>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>Unterbrechung der Nahtreihe</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>Hinterwandnaht</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>schräge Naht</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>zu weiter Stich</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>Stich nicht durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>ungleicher Nahtabstand</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>Wandeinriss</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>zu fest geknüpfte Naht</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>Faden im Lumen</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>große Randüberlappung</translation>
     </message>
 </context>
 </TS>

@@ -1087,46 +1087,6 @@
         <translation><numerusform>el nudo se desliza: queda %n lazada, es %1</numerusform><numerusform>el nudo se desliza: quedan %n lazadas, es %1</numerusform></translation>
     </message>
     <message>
-        <source>suture-line disruption</source>
-        <translation>interrupción de la línea de sutura</translation>
-    </message>
-    <message>
-        <source>back-wall stitch</source>
-        <translation>punto en la pared posterior</translation>
-    </message>
-    <message>
-        <source>oblique stitch</source>
-        <translation>punto oblicuo</translation>
-    </message>
-    <message>
-        <source>wide bite</source>
-        <translation>paso demasiado ancho</translation>
-    </message>
-    <message>
-        <source>partial-thickness bite</source>
-        <translation>paso de espesor parcial</translation>
-    </message>
-    <message>
-        <source>unequal spacing</source>
-        <translation>separación desigual</translation>
-    </message>
-    <message>
-        <source>wall tear</source>
-        <translation>desgarro de la pared</translation>
-    </message>
-    <message>
-        <source>over-tight stitch</source>
-        <translation>punto demasiado apretado</translation>
-    </message>
-    <message>
-        <source>thread in the lumen</source>
-        <translation>hilo en la luz</translation>
-    </message>
-    <message>
-        <source>large edge overlap</source>
-        <translation>gran solapamiento de los bordes</translation>
-    </message>
-    <message>
         <source>end product</source>
         <translation>resultado final</translation>
     </message>
@@ -3519,6 +3479,49 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The 3D mouse's daemon (spacenavd) closed the connection.</source>
         <translation>El servicio del ratón 3D (spacenavd) cerró la conexión.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::i18n::EndProductWords</name>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>interrupción de la línea de sutura</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>punto en la pared posterior</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>punto oblicuo</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>paso demasiado ancho</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>paso de espesor parcial</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>separación desigual</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>desgarro de la pared</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>punto demasiado apretado</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>hilo en la luz</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>gran solapamiento de los bordes</translation>
     </message>
 </context>
 </TS>
