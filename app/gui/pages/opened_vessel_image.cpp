@@ -344,6 +344,10 @@ OpenedVesselLayout OpenedVesselImage::layOut(const OpenedVessel& v, QSize size) 
     const double t =
         std::abs(b.y() - a.y()) > 1e-9 ? (out.sutureLineY - a.y()) / (b.y() - a.y()) : 0.5;
     const double crossing = a.x() + std::clamp(t, 0.0, 1.0) * (bx - a.x());
+    // across the seam the thread leaves one edge and comes in at the other: two pieces
+    out.threads.emplace_back(a, QPointF(bx, b.y()));
+    if (std::abs(bx - b.x()) > 0.5)
+      out.threads.emplace_back(QPointF(b.x() - (bx - a.x()), a.y()), b);
     const double wrapped =
         out.wall.left() +
         std::fmod(std::fmod(crossing - out.wall.left(), out.wall.width()) + out.wall.width(),
@@ -397,24 +401,11 @@ QImage OpenedVesselImage::draw(const OpenedVessel& v, QSize size) {
   painter.drawLine(QPointF(wall.left(), layout.sutureLineY),
                    QPointF(wall.right(), layout.sutureLineY));
 
-  // the threads, the short way round: across the seam, in two pieces clipped to the wall
+  // the threads, clipped to the wall
   painter.save();
   painter.setClipRect(wall);
   painter.setPen(QPen(kThread, 2));
-  for (const assessment::StitchMetrics& st : v.stitches) {
-    if (st.first < 0 || st.second < 0 ||
-        std::size_t(std::max(st.first, st.second)) >= layout.passages.size())
-      continue;
-    const QPointF a = layout.passages[std::size_t(st.first)];
-    const QPointF b = layout.passages[std::size_t(st.second)];
-    if (!located(a) || !located(b)) continue;
-    const double dx = wall.width() *
-                      turnDeg(v.passages[std::size_t(st.first)].circumferenceDeg,
-                              v.passages[std::size_t(st.second)].circumferenceDeg) /
-                      360.0;
-    painter.drawLine(a, QPointF(a.x() + dx, b.y()));
-    if (std::abs(a.x() + dx - b.x()) > 0.5) painter.drawLine(QPointF(b.x() - dx, a.y()), b);
-  }
+  for (const QLineF& thread : layout.threads) painter.drawLine(thread);
   painter.restore();
   painter.setPen(QPen(Qt::white, 1));
   painter.setBrush(kThread);

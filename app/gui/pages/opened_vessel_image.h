@@ -25,6 +25,7 @@
 
 #include <QCoreApplication>
 #include <QImage>
+#include <QLineF>
 #include <QRectF>
 #include <QSize>
 #include <QString>
@@ -45,6 +46,9 @@ struct OpenedVesselLayout {
   QRectF wall;  ///< the opened wall: its left edge 0°, its right edge 360°
   double sutureLineY = 0.0;
   std::vector<QPointF> passages;  ///< parallel to OpenedVessel::passages; NaN where not located
+  /// each stitch's thread from passage to passage, the short way round: two pieces, leaving
+  /// one edge and entering at the other, where it crosses the 0°/360° seam (clip to `wall`)
+  std::vector<QLineF> threads;
 
   struct Mark {
     int error = 0;  ///< index into OpenedVessel::errors

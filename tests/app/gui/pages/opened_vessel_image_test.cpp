@@ -95,6 +95,22 @@ TEST(OpenedVesselImage, AnglesRunAcrossTheWallFromZeroToThreeSixty) {
   EXPECT_GE(layout.wallNames[1].rect.top(), wall.bottom());
 }
 
+// a stitch across the 0°/360° seam runs the short way: out at the right edge, in at the left
+TEST(OpenedVesselImage, AThreadAcrossTheSeamGoesTheShortWayRound) {
+  const OpenedVesselLayout across = OpenedVesselImage::layOut(stitchesAt({358.0}), kSize);
+  ASSERT_EQ(across.threads.size(), 2u);
+  EXPECT_EQ(across.threads[0].p1(), across.passages[0]);
+  EXPECT_GT(across.threads[0].p2().x(), across.wall.right());
+  EXPECT_LT(across.threads[1].p1().x(), across.wall.left());
+  EXPECT_EQ(across.threads[1].p2(), across.passages[1]);
+  ASSERT_EQ(across.stitchLabels.size(), 1u);
+  EXPECT_TRUE(across.stitchLabels[0].at.x() < across.wall.left() + 10 ||
+              across.stitchLabels[0].at.x() > across.wall.right() - 10);
+  const OpenedVesselLayout within = OpenedVesselImage::layOut(stitchesAt({100.0}), kSize);
+  ASSERT_EQ(within.threads.size(), 1u);
+  EXPECT_EQ(within.threads[0].p2(), within.passages[1]);
+}
+
 TEST(OpenedVesselImage, TwoErrorsOnOnePassageStackAwayFromTheLine) {
   OpenedVessel v = stitchesAt({200.0});
   v.errors = {error(EndProductErrorKind::BackWallStitch, 200.0, 0, 0),
