@@ -1301,6 +1301,10 @@
         <source>Paused.</source>
         <translation>En pausa.</translation>
     </message>
+    <message>
+        <source>End product</source>
+        <translation>Resultado final</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::AttemptPage</name>
@@ -1573,6 +1577,78 @@
     <message numerus="yes">
         <source>Open %1 · closed %2 (%n reading(s))</source>
         <translation><numerusform>Abierta %1 · cerrada %2 (%n lectura)</numerusform><numerusform>Abierta %1 · cerrada %2 (%n lecturas)</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::EndProductPanel</name>
+    <message>
+        <source>&lt;b&gt;Opened vessel&lt;/b&gt;: cut along its axis and laid flat; 0° faces the microscope. Dots are passages, blue lines the stitches' thread, numbered marks the errors.</source>
+        <translation>&lt;b&gt;Vaso abierto&lt;/b&gt;: cortado a lo largo de su eje y extendido; 0° mira al microscopio. Los puntos son pasos por la pared, las líneas azules el hilo de los puntos de sutura, las marcas numeradas los errores.</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <source>The end product was not judged: this attempt was scored before its errors were kept.</source>
+        <translation>El resultado final no se evaluó: este intento se calificó antes de que se guardaran sus errores.</translation>
+    </message>
+    <message>
+        <source>No end-product errors.</source>
+        <translation>Sin errores en el resultado final.</translation>
+    </message>
+    <message>
+        <source>stitch %1</source>
+        <translation>punto %1</translation>
+    </message>
+    <message>
+        <source>pierce %1</source>
+        <translation>paso %1</translation>
+    </message>
+    <message>
+        <source>at %1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>a %1°</translation>
+    </message>
+    <message>
+        <source>not located</source>
+        <translation>sin ubicar</translation>
+    </message>
+    <message>
+        <source>%1 wall thicknesses</source>
+        <translation>%1 grosores de pared</translation>
+    </message>
+    <message>
+        <source>bites %1 apart</source>
+        <translation>pasos separados %1</translation>
+    </message>
+    <message>
+        <source>gap %1 off the mean</source>
+        <translation>separación %1 fuera de la media</translation>
+    </message>
+    <message>
+        <source>%1 (limit %2)</source>
+        <translation>%1 (límite %2)</translation>
+    </message>
+    <message>
+        <source>End-product errors (Anastomosis Lapse Index): %1</source>
+        <translation>Errores del resultado final (Anastomosis Lapse Index): %1</translation>
+    </message>
+    <message>
+        <source>links torn: %1</source>
+        <translation>enlaces rotos: %1</translation>
     </message>
 </context>
 <context>
@@ -2216,6 +2292,44 @@
     <message>
         <source>%1 could not be added (%2).</source>
         <translation>No se pudo añadir a %1 (%2).</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::OpenedVesselImage</name>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>an error not located: its kind, its number in the error list</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Not located: %1</source>
+        <translation>Sin ubicar: %1</translation>
+    </message>
+    <message>
+        <source>end 1</source>
+        <translation>extremo 1</translation>
+    </message>
+    <message>
+        <source>end 2</source>
+        <translation>extremo 2</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>front wall</source>
+        <translation>pared anterior</translation>
+    </message>
+    <message>
+        <source>back wall</source>
+        <translation>pared posterior</translation>
+    </message>
+    <message>
+        <source>S%1</source>
+        <comment>stitch number on the opened vessel</comment>
+        <translation>P%1</translation>
     </message>
 </context>
 <context>
@@ -2922,6 +3036,30 @@ Error RMS %7 mm, máximo %8 mm
         <source>No attempts yet.</source>
         <translation>Aún no hay intentos.</translation>
     </message>
+    <message>
+        <source>End product</source>
+        <translation>Resultado final</translation>
+    </message>
+    <message>
+        <source>Each vessel cut along its axis and laid flat: 0° faces the microscope, the back wall is shaded.</source>
+        <translation>Cada vaso cortado a lo largo de su eje y extendido: 0° mira al microscopio, la pared posterior está sombreada.</translation>
+    </message>
+    <message>
+        <source>Attempt %1: %2, %3</source>
+        <translation>Intento %1: %2, %3</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>
@@ -3373,6 +3511,49 @@ Error RMS %7 mm, máximo %8 mm
     </message>
 </context>
 <context>
+    <name>microsim::i18n::EndProductWords</name>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>interrupción de la línea de sutura</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>punto en la pared posterior</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>punto oblicuo</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>paso demasiado ancho</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>paso de espesor parcial</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>separación desigual</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>desgarro de la pared</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>punto demasiado apretado</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>hilo en la luz</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>gran solapamiento de los bordes</translation>
+    </message>
+</context>
+<context>
     <name>microsim::tracking::GamepadSource</name>
     <message>
         <source>The game controller cannot be read: SDL did not start (%1).</source>
@@ -3479,49 +3660,6 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>The 3D mouse's daemon (spacenavd) closed the connection.</source>
         <translation>El servicio del ratón 3D (spacenavd) cerró la conexión.</translation>
-    </message>
-</context>
-<context>
-    <name>microsim::i18n::EndProductWords</name>
-    <message>
-        <source>suture-line disruption</source>
-        <translation>interrupción de la línea de sutura</translation>
-    </message>
-    <message>
-        <source>back-wall stitch</source>
-        <translation>punto en la pared posterior</translation>
-    </message>
-    <message>
-        <source>oblique stitch</source>
-        <translation>punto oblicuo</translation>
-    </message>
-    <message>
-        <source>wide bite</source>
-        <translation>paso demasiado ancho</translation>
-    </message>
-    <message>
-        <source>partial-thickness bite</source>
-        <translation>paso de espesor parcial</translation>
-    </message>
-    <message>
-        <source>unequal spacing</source>
-        <translation>separación desigual</translation>
-    </message>
-    <message>
-        <source>wall tear</source>
-        <translation>desgarro de la pared</translation>
-    </message>
-    <message>
-        <source>over-tight stitch</source>
-        <translation>punto demasiado apretado</translation>
-    </message>
-    <message>
-        <source>thread in the lumen</source>
-        <translation>hilo en la luz</translation>
-    </message>
-    <message>
-        <source>large edge overlap</source>
-        <translation>gran solapamiento de los bordes</translation>
     </message>
 </context>
 </TS>
