@@ -3048,18 +3048,6 @@ RMS-Fehler %7 mm, größter %8 mm
         <source>Attempt %1: %2, %3</source>
         <translation>Versuch %1: %2, %3</translation>
     </message>
-    <message>
-        <source>Error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <source>Where</source>
-        <translation>Wo</translation>
-    </message>
-    <message>
-        <source>Measured</source>
-        <translation>Gemessen</translation>
-    </message>
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>

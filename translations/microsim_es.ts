@@ -3048,18 +3048,6 @@ Error RMS %7 mm, máximo %8 mm
         <source>Attempt %1: %2, %3</source>
         <translation>Intento %1: %2, %3</translation>
     </message>
-    <message>
-        <source>Error</source>
-        <translation>Error</translation>
-    </message>
-    <message>
-        <source>Where</source>
-        <translation>Dónde</translation>
-    </message>
-    <message>
-        <source>Measured</source>
-        <translation>Medido</translation>
-    </message>
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>

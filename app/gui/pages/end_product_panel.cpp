@@ -29,7 +29,7 @@ EndProductPanel::EndProductPanel(Qt::Orientation orientation, QWidget* parent) :
   summary_->setWordWrap(true);
   table_ = new QTableWidget(0, 4, this);
   table_->setObjectName(QStringLiteral("endProductTable"));
-  table_->setHorizontalHeaderLabels({tr("#"), tr("Error"), tr("Where"), tr("Measured")});
+  table_->setHorizontalHeaderLabels(columnTitles());
   for (int column = 0; column < 3; ++column)
     table_->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
   table_->horizontalHeader()->setSectionResizeMode(3, QHeaderView::Stretch);
@@ -73,14 +73,20 @@ void EndProductPanel::setEndProduct(const OpenedVessel& vessel, bool judged) {
   summary_->setText(summary(vessel.errors, judged));
   table_->setRowCount(static_cast<int>(vessel.errors.size()));
   for (std::size_t i = 0; i < vessel.errors.size(); ++i) {
-    const assessment::EndProductError& e = vessel.errors[i];
-    const int row = static_cast<int>(i);
-    table_->setItem(row, 0, new QTableWidgetItem(QString::number(i + 1)));
-    table_->setItem(row, 1, new QTableWidgetItem(i18n::EndProductWords::kind(e.kind)));
-    table_->setItem(row, 2, new QTableWidgetItem(where(e)));
-    table_->setItem(row, 3, new QTableWidgetItem(measured(e)));
+    const QStringList texts = rowTexts(i, vessel.errors[i]);
+    for (int column = 0; column < texts.size(); ++column)
+      table_->setItem(static_cast<int>(i), column, new QTableWidgetItem(texts[column]));
   }
   table_->setVisible(!vessel.errors.empty());
+}
+
+QStringList EndProductPanel::columnTitles() {
+  return {tr("#"), tr("Error"), tr("Where"), tr("Measured")};
+}
+
+QStringList EndProductPanel::rowTexts(std::size_t index, const assessment::EndProductError& error) {
+  return {QString::number(index + 1), i18n::EndProductWords::kind(error.kind), where(error),
+          measured(error)};
 }
 
 QString EndProductPanel::summary(const std::vector<assessment::EndProductError>& errors,

@@ -7,6 +7,7 @@
 
 #include "gui/pages/opened_vessel_image.h"
 
+#include <QStringList>
 #include <QWidget>
 
 class QLabel;
@@ -31,6 +32,10 @@ class EndProductPanel : public QWidget {
   /// The drawing as shown (null image when cleared).
   const QImage& image() const { return image_; }
 
+  /// The list's column titles: number, error, where, measured.
+  static QStringList columnTitles();
+  /// One error's row under them; `index` is 0-based and shown from 1.
+  static QStringList rowTexts(std::size_t index, const assessment::EndProductError& error);
   /// "No end-product errors.", "2 end-product errors ...", or that it was not judged.
   static QString summary(const std::vector<assessment::EndProductError>& errors, bool judged);
   /// "stitch 1, pierce 2, at 182°"; "not located" for an error with no angle and no stitch.

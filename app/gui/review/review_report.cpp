@@ -5,7 +5,6 @@
 #include "gui/review/review_text.h"
 #include "gui/save_file.h"
 
-#include "i18n/end_product_words.h"
 #include "microsim/assessment/storage/attempts_csv.h"
 
 #include <QChart>
@@ -225,13 +224,9 @@ bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& ca
     const QImage picture = OpenedVesselImage::draw(*it, size * 2);
     r.image(picture, 0.8);
     const QList<double> errorWidths{0.06, 0.3, 0.32, 0.32};
-    r.row({tr("#"), tr("Error"), tr("Where"), tr("Measured")}, errorWidths, true);
-    for (std::size_t i = 0; i < it->errors.size(); ++i) {
-      const assessment::EndProductError& e = it->errors[i];
-      r.row({QString::number(i + 1), i18n::EndProductWords::kind(e.kind), EndProductPanel::where(e),
-             EndProductPanel::measured(e)},
-            errorWidths, false);
-    }
+    r.row(EndProductPanel::columnTitles(), errorWidths, true);
+    for (std::size_t i = 0; i < it->errors.size(); ++i)
+      r.row(EndProductPanel::rowTexts(i, it->errors[i]), errorWidths, false);
   }
 
   if (!painter.end() || !file.commit(why)) {
