@@ -371,8 +371,9 @@ OpenedVesselLayout OpenedVesselImage::layOut(const OpenedVessel& v, QSize size) 
   return out;
 }
 
-QImage OpenedVesselImage::draw(const OpenedVessel& v, QSize size) {
-  QImage image(size, QImage::Format_ARGB32_Premultiplied);
+QImage OpenedVesselImage::draw(const OpenedVessel& v, QSize size, qreal pixelRatio) {
+  QImage image(size * pixelRatio, QImage::Format_ARGB32_Premultiplied);
+  image.setDevicePixelRatio(pixelRatio);
   image.fill(kBackground);
   const OpenedVesselLayout layout = layOut(v, size);
   const QRectF& wall = layout.wall;

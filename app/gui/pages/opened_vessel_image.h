@@ -87,7 +87,9 @@ class OpenedVesselImage {
 
  public:
   static OpenedVesselLayout layOut(const OpenedVessel& vessel, QSize size);
-  static QImage draw(const OpenedVessel& vessel, QSize size);
+  /// The drawing laid out for `size`, with `pixelRatio` pixels to each of its units (paper
+  /// wants more than a screen).
+  static QImage draw(const OpenedVessel& vessel, QSize size, qreal pixelRatio = 1.0);
 };
 
 }  // namespace microsim::gui

@@ -219,9 +219,8 @@ bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& ca
                .arg(lesson ? lesson->title : a.lesson,
                     locale.toString(a.started.toLocalTime(), QLocale::ShortFormat)),
            11, true);
-    // drawn at twice the page's size, so that it stays sharp on paper
-    const QSize size = EndProductPanel::imageSize();
-    const QImage picture = OpenedVesselImage::draw(*it, size * 2);
+    // as on the screen, at three pixels to each of the screen's, so that it stays sharp on paper
+    const QImage picture = OpenedVesselImage::draw(*it, EndProductPanel::imageSize(), 3.0);
     r.image(picture, 0.8);
     const QList<double> errorWidths{0.06, 0.3, 0.32, 0.32};
     r.row(EndProductPanel::columnTitles(), errorWidths, true);

@@ -205,6 +205,12 @@ TEST(OpenedVesselImage, DrawsTheBackWallShadedAndEachMarkerInItsColour) {
       if (c.red() > 80 && c.red() < 140 && c.green() < 60 && c.blue() > 120) ++purple;
     }
   EXPECT_GT(purple, 5);
+  // for paper: the same drawing with more pixels to each unit
+  const QImage sharp = OpenedVesselImage::draw(v, kSize, 3.0);
+  EXPECT_EQ(sharp.size(), kSize * 3);
+  EXPECT_EQ(sharp.devicePixelRatio(), 3.0);
+  const QPointF inBack(wall.left() + wall.width() * 5 / 16, wall.top() + 3);
+  EXPECT_EQ(sharp.pixelColor((inBack * 3).toPoint()).rgb(), back.rgb());
 }
 
 }  // namespace
