@@ -1087,46 +1087,6 @@
         <translation><numerusform>der Knoten rutscht: %n Wurf bleibt, er ist %1</numerusform><numerusform>der Knoten rutscht: %n Würfe bleiben, er ist %1</numerusform></translation>
     </message>
     <message>
-        <source>suture-line disruption</source>
-        <translation>Unterbrechung der Nahtreihe</translation>
-    </message>
-    <message>
-        <source>back-wall stitch</source>
-        <translation>Hinterwandnaht</translation>
-    </message>
-    <message>
-        <source>oblique stitch</source>
-        <translation>schräge Naht</translation>
-    </message>
-    <message>
-        <source>wide bite</source>
-        <translation>zu weiter Stich</translation>
-    </message>
-    <message>
-        <source>partial-thickness bite</source>
-        <translation>Stich nicht durch die ganze Wand</translation>
-    </message>
-    <message>
-        <source>unequal spacing</source>
-        <translation>ungleicher Nahtabstand</translation>
-    </message>
-    <message>
-        <source>wall tear</source>
-        <translation>Wandeinriss</translation>
-    </message>
-    <message>
-        <source>over-tight stitch</source>
-        <translation>zu fest geknüpfte Naht</translation>
-    </message>
-    <message>
-        <source>thread in the lumen</source>
-        <translation>Faden im Lumen</translation>
-    </message>
-    <message>
-        <source>large edge overlap</source>
-        <translation>große Randüberlappung</translation>
-    </message>
-    <message>
         <source>end product</source>
         <translation>Endergebnis</translation>
     </message>
@@ -1340,6 +1300,10 @@
     <message>
         <source>Paused.</source>
         <translation>Angehalten.</translation>
+    </message>
+    <message>
+        <source>End product</source>
+        <translation>Endergebnis</translation>
     </message>
 </context>
 <context>
@@ -1613,6 +1577,78 @@
     <message numerus="yes">
         <source>Open %1 · closed %2 (%n reading(s))</source>
         <translation><numerusform>Offen %1 · geschlossen %2 (%n Messwert)</numerusform><numerusform>Offen %1 · geschlossen %2 (%n Messwerte)</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::EndProductPanel</name>
+    <message>
+        <source>&lt;b&gt;Opened vessel&lt;/b&gt;: cut along its axis and laid flat; 0° faces the microscope. Dots are passages, blue lines the stitches' thread, numbered marks the errors.</source>
+        <translation>&lt;b&gt;Eröffnetes Gefäß&lt;/b&gt;: entlang der Achse aufgeschnitten und flach ausgebreitet; 0° zeigt zum Mikroskop. Punkte sind Stiche durch die Wand, blaue Linien der Faden der Nähte, nummerierte Zeichen die Fehler.</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Wo</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>The end product was not judged: this attempt was scored before its errors were kept.</source>
+        <translation>Das Endergebnis wurde nicht beurteilt: Dieser Versuch wurde bewertet, bevor seine Fehler gespeichert wurden.</translation>
+    </message>
+    <message>
+        <source>No end-product errors.</source>
+        <translation>Keine Fehler im Endergebnis.</translation>
+    </message>
+    <message>
+        <source>stitch %1</source>
+        <translation>Naht %1</translation>
+    </message>
+    <message>
+        <source>pierce %1</source>
+        <translation>Stich %1</translation>
+    </message>
+    <message>
+        <source>at %1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>bei %1°</translation>
+    </message>
+    <message>
+        <source>not located</source>
+        <translation>ohne Ort</translation>
+    </message>
+    <message>
+        <source>%1 wall thicknesses</source>
+        <translation>%1 Wanddicken</translation>
+    </message>
+    <message>
+        <source>bites %1 apart</source>
+        <translation>Stiche %1 auseinander</translation>
+    </message>
+    <message>
+        <source>gap %1 off the mean</source>
+        <translation>Abstand %1 neben dem Mittel</translation>
+    </message>
+    <message>
+        <source>%1 (limit %2)</source>
+        <translation>%1 (Grenze %2)</translation>
+    </message>
+    <message>
+        <source>End-product errors (Anastomosis Lapse Index): %1</source>
+        <translation>Fehler im Endergebnis (Anastomosis Lapse Index): %1</translation>
+    </message>
+    <message>
+        <source>links torn: %1</source>
+        <translation>gerissene Verbindungen: %1</translation>
     </message>
 </context>
 <context>
@@ -2312,6 +2348,44 @@
     <message>
         <source>%1 could not be added (%2).</source>
         <translation>%1 konnte nicht hinzugefügt werden (%2).</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::OpenedVesselImage</name>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>an error not located: its kind, its number in the error list</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Not located: %1</source>
+        <translation>Ohne Ort: %1</translation>
+    </message>
+    <message>
+        <source>end 1</source>
+        <translation>Ende 1</translation>
+    </message>
+    <message>
+        <source>end 2</source>
+        <translation>Ende 2</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>front wall</source>
+        <translation>Vorderwand</translation>
+    </message>
+    <message>
+        <source>back wall</source>
+        <translation>Hinterwand</translation>
+    </message>
+    <message>
+        <source>S%1</source>
+        <comment>stitch number on the opened vessel</comment>
+        <translation>N%1</translation>
     </message>
 </context>
 <context>
@@ -3018,6 +3092,18 @@ RMS-Fehler %7 mm, größter %8 mm
         <source>No attempts yet.</source>
         <translation>Noch keine Versuche.</translation>
     </message>
+    <message>
+        <source>End product</source>
+        <translation>Endergebnis</translation>
+    </message>
+    <message>
+        <source>Each vessel cut along its axis and laid flat: 0° faces the microscope, the back wall is shaded.</source>
+        <translation>Jedes Gefäß entlang der Achse aufgeschnitten und flach ausgebreitet: 0° zeigt zum Mikroskop, die Hinterwand ist dunkler.</translation>
+    </message>
+    <message>
+        <source>Attempt %1: %2, %3</source>
+        <translation>Versuch %1: %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>
@@ -3498,6 +3584,49 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
         <translation>Wie die beiden Augen des Mikroskops gezeigt werden. Quad-Buffer-Stereo wird nur angeboten, wo die Anzeige linke und rechte Puffer hat.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::i18n::EndProductWords</name>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>Unterbrechung der Nahtreihe</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>Hinterwandnaht</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>schräge Naht</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>zu weiter Stich</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>Stich nicht durch die ganze Wand</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>ungleicher Nahtabstand</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>Wandeinriss</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>zu fest geknüpfte Naht</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>Faden im Lumen</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>große Randüberlappung</translation>
     </message>
 </context>
 <context>

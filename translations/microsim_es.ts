@@ -1087,46 +1087,6 @@
         <translation><numerusform>el nudo se desliza: queda %n lazada, es %1</numerusform><numerusform>el nudo se desliza: quedan %n lazadas, es %1</numerusform></translation>
     </message>
     <message>
-        <source>suture-line disruption</source>
-        <translation>interrupción de la línea de sutura</translation>
-    </message>
-    <message>
-        <source>back-wall stitch</source>
-        <translation>punto en la pared posterior</translation>
-    </message>
-    <message>
-        <source>oblique stitch</source>
-        <translation>punto oblicuo</translation>
-    </message>
-    <message>
-        <source>wide bite</source>
-        <translation>paso demasiado ancho</translation>
-    </message>
-    <message>
-        <source>partial-thickness bite</source>
-        <translation>paso de espesor parcial</translation>
-    </message>
-    <message>
-        <source>unequal spacing</source>
-        <translation>separación desigual</translation>
-    </message>
-    <message>
-        <source>wall tear</source>
-        <translation>desgarro de la pared</translation>
-    </message>
-    <message>
-        <source>over-tight stitch</source>
-        <translation>punto demasiado apretado</translation>
-    </message>
-    <message>
-        <source>thread in the lumen</source>
-        <translation>hilo en la luz</translation>
-    </message>
-    <message>
-        <source>large edge overlap</source>
-        <translation>gran solapamiento de los bordes</translation>
-    </message>
-    <message>
         <source>end product</source>
         <translation>resultado final</translation>
     </message>
@@ -1340,6 +1300,10 @@
     <message>
         <source>Paused.</source>
         <translation>En pausa.</translation>
+    </message>
+    <message>
+        <source>End product</source>
+        <translation>Resultado final</translation>
     </message>
 </context>
 <context>
@@ -1613,6 +1577,78 @@
     <message numerus="yes">
         <source>Open %1 · closed %2 (%n reading(s))</source>
         <translation><numerusform>Abierta %1 · cerrada %2 (%n lectura)</numerusform><numerusform>Abierta %1 · cerrada %2 (%n lecturas)</numerusform></translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::EndProductPanel</name>
+    <message>
+        <source>&lt;b&gt;Opened vessel&lt;/b&gt;: cut along its axis and laid flat; 0° faces the microscope. Dots are passages, blue lines the stitches' thread, numbered marks the errors.</source>
+        <translation>&lt;b&gt;Vaso abierto&lt;/b&gt;: cortado a lo largo de su eje y extendido; 0° mira al microscopio. Los puntos son pasos por la pared, las líneas azules el hilo de los puntos de sutura, las marcas numeradas los errores.</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Dónde</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <source>The end product was not judged: this attempt was scored before its errors were kept.</source>
+        <translation>El resultado final no se evaluó: este intento se calificó antes de que se guardaran sus errores.</translation>
+    </message>
+    <message>
+        <source>No end-product errors.</source>
+        <translation>Sin errores en el resultado final.</translation>
+    </message>
+    <message>
+        <source>stitch %1</source>
+        <translation>punto %1</translation>
+    </message>
+    <message>
+        <source>pierce %1</source>
+        <translation>paso %1</translation>
+    </message>
+    <message>
+        <source>at %1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>a %1°</translation>
+    </message>
+    <message>
+        <source>not located</source>
+        <translation>sin ubicar</translation>
+    </message>
+    <message>
+        <source>%1 wall thicknesses</source>
+        <translation>%1 grosores de pared</translation>
+    </message>
+    <message>
+        <source>bites %1 apart</source>
+        <translation>pasos separados %1</translation>
+    </message>
+    <message>
+        <source>gap %1 off the mean</source>
+        <translation>separación %1 fuera de la media</translation>
+    </message>
+    <message>
+        <source>%1 (limit %2)</source>
+        <translation>%1 (límite %2)</translation>
+    </message>
+    <message>
+        <source>End-product errors (Anastomosis Lapse Index): %1</source>
+        <translation>Errores del resultado final (Anastomosis Lapse Index): %1</translation>
+    </message>
+    <message>
+        <source>links torn: %1</source>
+        <translation>enlaces rotos: %1</translation>
     </message>
 </context>
 <context>
@@ -2312,6 +2348,44 @@
     <message>
         <source>%1 could not be added (%2).</source>
         <translation>No se pudo añadir a %1 (%2).</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::gui::OpenedVesselImage</name>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>an error not located: its kind, its number in the error list</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Not located: %1</source>
+        <translation>Sin ubicar: %1</translation>
+    </message>
+    <message>
+        <source>end 1</source>
+        <translation>extremo 1</translation>
+    </message>
+    <message>
+        <source>end 2</source>
+        <translation>extremo 2</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <comment>an angle round the vessel</comment>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>front wall</source>
+        <translation>pared anterior</translation>
+    </message>
+    <message>
+        <source>back wall</source>
+        <translation>pared posterior</translation>
+    </message>
+    <message>
+        <source>S%1</source>
+        <comment>stitch number on the opened vessel</comment>
+        <translation>P%1</translation>
     </message>
 </context>
 <context>
@@ -3018,6 +3092,18 @@ Error RMS %7 mm, máximo %8 mm
         <source>No attempts yet.</source>
         <translation>Aún no hay intentos.</translation>
     </message>
+    <message>
+        <source>End product</source>
+        <translation>Resultado final</translation>
+    </message>
+    <message>
+        <source>Each vessel cut along its axis and laid flat: 0° faces the microscope, the back wall is shaded.</source>
+        <translation>Cada vaso cortado a lo largo de su eje y extendido: 0° mira al microscopio, la pared posterior está sombreada.</translation>
+    </message>
+    <message>
+        <source>Attempt %1: %2, %3</source>
+        <translation>Intento %1: %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>
@@ -3498,6 +3584,49 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>How the microscope's two eyes are shown. Quad-buffer stereo is offered only where the display has left and right buffers.</source>
         <translation>Cómo se muestran los dos ojos del microscopio. El estéreo de cuádruple búfer solo se ofrece donde la pantalla tiene búferes izquierdo y derecho.</translation>
+    </message>
+</context>
+<context>
+    <name>microsim::i18n::EndProductWords</name>
+    <message>
+        <source>suture-line disruption</source>
+        <translation>interrupción de la línea de sutura</translation>
+    </message>
+    <message>
+        <source>back-wall stitch</source>
+        <translation>punto en la pared posterior</translation>
+    </message>
+    <message>
+        <source>oblique stitch</source>
+        <translation>punto oblicuo</translation>
+    </message>
+    <message>
+        <source>wide bite</source>
+        <translation>paso demasiado ancho</translation>
+    </message>
+    <message>
+        <source>partial-thickness bite</source>
+        <translation>paso de espesor parcial</translation>
+    </message>
+    <message>
+        <source>unequal spacing</source>
+        <translation>separación desigual</translation>
+    </message>
+    <message>
+        <source>wall tear</source>
+        <translation>desgarro de la pared</translation>
+    </message>
+    <message>
+        <source>over-tight stitch</source>
+        <translation>punto demasiado apretado</translation>
+    </message>
+    <message>
+        <source>thread in the lumen</source>
+        <translation>hilo en la luz</translation>
+    </message>
+    <message>
+        <source>large edge overlap</source>
+        <translation>gran solapamiento de los bordes</translation>
     </message>
 </context>
 <context>

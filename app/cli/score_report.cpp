@@ -1,5 +1,6 @@
 #include "cli/score_report.h"
 
+#include "i18n/end_product_words.h"
 #include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/pierce_fields.h"
 
@@ -71,33 +72,6 @@ void printPierces(QTextStream& out, const as::AttemptScore& s) {
   }
 }
 
-QString endProductErrorName(as::EndProductErrorKind kind) {
-  using K = as::EndProductErrorKind;
-  switch (kind) {
-    case K::SutureLineDisruption:
-      return Cli::tr("suture-line disruption");
-    case K::BackWallStitch:
-      return Cli::tr("back-wall stitch");
-    case K::ObliqueStitch:
-      return Cli::tr("oblique stitch");
-    case K::WideBite:
-      return Cli::tr("wide bite");
-    case K::PartialThicknessBite:
-      return Cli::tr("partial-thickness bite");
-    case K::UnequalSpacing:
-      return Cli::tr("unequal spacing");
-    case K::WallTear:
-      return Cli::tr("wall tear");
-    case K::OverTightStitch:
-      return Cli::tr("over-tight stitch");
-    case K::ThreadInLumen:
-      return Cli::tr("thread in the lumen");
-    case K::LargeEdgeOverlap:
-      return Cli::tr("large edge overlap");
-  }
-  return {};
-}
-
 // a 0-based index shown 1-based, as the pierces are numbered; "–" for none
 QString endProductIndexText(int index) {
   return index >= 0 ? QString::number(index + 1) : QStringLiteral("–");
@@ -117,7 +91,7 @@ void printEndProduct(QTextStream& out, const as::AttemptScore& s) {
   for (std::size_t i = 0; i < s.endProduct.size(); ++i) {
     const as::EndProductError& e = s.endProduct[i];
     out << "  " << QString::number(i + 1).rightJustified(2) << "  "
-        << endProductErrorName(e.kind).leftJustified(26)
+        << i18n::EndProductWords::kind(e.kind).leftJustified(26)
         << endProductIndexText(e.stitch).rightJustified(7)
         << endProductIndexText(e.passage).rightJustified(8)
         << number(e.angleDeg, 1).rightJustified(8) << number(e.measured, 3).rightJustified(10)

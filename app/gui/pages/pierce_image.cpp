@@ -1,12 +1,12 @@
 #include "gui/pages/pierce_image.h"
 
 #include "gui/number_format.h"
+#include "gui/pages/label_place.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace microsim::gui {
@@ -44,30 +44,6 @@ QFont pierceLabelFont(QSize size) {
   QFont font;
   font.setPixelSize(std::max(10, size.height() / 22));
   return font;
-}
-
-// the first place beside `at` where a label of `extent` covers none of `taken` and lies
-// inside `bounds`; beside the dot on the preferred side first, then the other side, then
-// stacked further away; the first place when none is free
-QRectF freePierceLabelPlace(QPointF at, QSizeF extent, bool above, const std::vector<QRectF>& taken, const QRectF& bounds) {
-  const double w = extent.width();
-  const double h = extent.height();
-  const double near = kPierceDotRadius + kPierceLabelGap;
-  std::vector<QRectF> candidates;
-  for (int ring = 0; ring < 6; ++ring) {
-    const double rise = ring * (h + 1.0);
-    const std::array<double, 2> tops = above ? std::array<double, 2>{at.y() - near - h - rise, at.y() + near + rise}
-                                             : std::array<double, 2>{at.y() + near + rise, at.y() - near - h - rise};
-    for (const double top : tops) {
-      candidates.emplace_back(at.x() + near, top, w, h);   // right of the dot
-      candidates.emplace_back(at.x() - near - w, top, w, h);  // left of it
-    }
-  }
-  for (const QRectF& c : candidates) {
-    if (!bounds.contains(c)) continue;
-    if (std::none_of(taken.begin(), taken.end(), [&c](const QRectF& t) { return t.intersects(c); })) return c;
-  }
-  return candidates.front();
 }
 
 PierceDiagram layOutPierceDiagram(const std::vector<sim::VesselDef>& vessels,
@@ -140,7 +116,8 @@ PierceDiagram layOutPierceDiagram(const std::vector<sim::VesselDef>& vessels,
     PierceMark& m = diagram.marks[i];
     m.label = QStringLiteral("%1: %2°").arg(i + 1).arg(NumberFormat::number(pierces[i].angleDeg, 0));
     const QSizeF extent(std::ceil(metrics.horizontalAdvance(m.label)) + 1.0, std::ceil(metrics.height()));
-    m.labelRect = freePierceLabelPlace(m.at, extent, i % 2 == 0, taken, bounds);
+    m.labelRect =
+        freeLabelPlace(m.at, extent, kPierceDotRadius + kPierceLabelGap, i % 2 == 0, taken, bounds);
     taken.push_back(m.labelRect);
   }
   return diagram;

@@ -2,6 +2,7 @@
 
 #include "gui/metric_vocabulary.h"
 #include "gui/number_format.h"
+#include "gui/pages/end_product_panel.h"
 #include "gui/pages/feedback_text.h"
 #include "gui/pages/pierce_image.h"
 #include "gui/settings/tunables.h"
@@ -40,6 +41,7 @@ ResultsPage::ResultsPage(QWidget* parent) : QWidget(parent) {
   pierces_ = new QLabel(this);
   pierces_->setObjectName(QStringLiteral("pierceImage"));
   pierces_->setAlignment(Qt::AlignCenter);
+  endProduct_ = new EndProductPanel(Qt::Horizontal, this);
   auto* retry = new QPushButton(tr("Retry"), this);
   retry->setObjectName(QStringLiteral("retryButton"));
   auto* back = new QPushButton(tr("Back to the lessons"), this);
@@ -66,6 +68,7 @@ ResultsPage::ResultsPage(QWidget* parent) : QWidget(parent) {
   layout->addLayout(top);
   layout->addWidget(message_);
   layout->addLayout(body, 1);
+  layout->addWidget(endProduct_);
   layout->addLayout(buttons);
 
   connect(retry, &QPushButton::clicked, this, &ResultsPage::retry);
@@ -84,6 +87,7 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
     verdict_->setText(tr("Not scored"));
     message_->setText(result.problem ? AttemptPage::describe(*result.problem) : QString());
     pierces_->clear();
+    endProduct_->clear();
     return;
   }
   const assessment::AttemptScore& s = result.score;
@@ -109,6 +113,7 @@ void ResultsPage::show(const AttemptResult& result, const QString& lessonTitle) 
     metrics_->setItem(row, 3, new QTableWidgetItem(m.feedback.empty() ? tr("Good.") : FeedbackText::advice(m.feedback)));
   }
   pierces_->setPixmap(QPixmap::fromImage(drawPierceAngles(result.vessels, result.pierces, QSize(420, 260))));
+  endProduct_->setEndProduct({s.pierces, s.stitches, s.endProduct}, true);
 }
 
 }  // namespace microsim::gui

@@ -1,7 +1,8 @@
 #pragma once
 // After an attempt: the score and whether it passed, each metric with its value, target and
 // the advice for its feedback key (feedback_text.h), never-events, the pierce angles drawn
-// on the vessel (pierce_image.h), and Retry / Back to the lessons.
+// on the vessel (pierce_image.h), the finished anastomosis opened with its errors marked and
+// listed (end_product_panel.h), and Retry / Back to the lessons.
 
 #include "gui/pages/attempt_page.h"
 
@@ -11,6 +12,8 @@ class QLabel;
 class QTableWidget;
 
 namespace microsim::gui {
+
+class EndProductPanel;
 
 class ResultsPage : public QWidget {
   Q_OBJECT
@@ -35,6 +38,7 @@ class ResultsPage : public QWidget {
   QLabel* message_ = nullptr;
   QTableWidget* metrics_ = nullptr;
   QLabel* pierces_ = nullptr;
+  EndProductPanel* endProduct_ = nullptr;
 };
 
 }  // namespace microsim::gui

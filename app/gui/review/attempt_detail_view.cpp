@@ -2,6 +2,7 @@
 
 #include "gui/metric_vocabulary.h"
 #include "gui/number_format.h"
+#include "gui/pages/end_product_panel.h"
 #include "gui/review/replay_controls.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_data.h"
@@ -59,6 +60,7 @@ AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
   for (const assessment::PierceField& field : assessment::pierceFields())
     pierceHeaders << MetricVocabulary::pierceFieldTitle(field.key);
   pierces_ = makeTable(pierceHeaders);
+  endProduct_ = new EndProductPanel(Qt::Vertical);
 
   annotations_ = new QListWidget;
   annotations_->setWordWrap(true);
@@ -80,6 +82,7 @@ AttemptDetailView::AttemptDetailView(QWidget* parent) : QWidget(parent) {
   auto* tabs = new QTabWidget;
   tabs->addTab(metrics_, tr("Metrics"));
   tabs->addTab(pierces_, tr("Pierces"));
+  tabs->addTab(endProduct_, tr("End product"));
   tabs->addTab(notes, tr("Annotations"));
 
   auto* left = new QWidget;
@@ -131,6 +134,7 @@ void AttemptDetailView::clear() {
   neverEvents_->hide();
   metrics_->setRowCount(0);
   pierces_->setRowCount(0);
+  endProduct_->clear();
   annotations_->clear();
   note_->clear();
   addNote_->setEnabled(false);
@@ -161,6 +165,7 @@ void AttemptDetailView::setAttempt(const assessment::AttemptDetail& detail, cons
   heading_->setText(text);
   fillMetrics(detail);
   fillPierces(detail);
+  if (a.score) endProduct_->setEndProduct(openedVessel(detail), detail.endProduct.judged);
   fillAnnotations(detail);
   addNote_->setEnabled(canAnnotate);
   note_->setEnabled(canAnnotate);

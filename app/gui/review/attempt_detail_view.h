@@ -1,6 +1,7 @@
 #pragma once
 // One attempt in detail: its summary, the per-metric table with feedback, the never-events,
-// the per-pierce values (angles, bite, wall), the instructors' annotations (instructors may
+// the per-pierce values (angles, bite, wall), the finished anastomosis opened with its
+// errors (end_product_panel.h), the instructors' annotations (instructors may
 // add one), and a 3D replay of its stored recording in its lesson's scene, with the player's
 // controls and event timeline (replay_controls.h).
 
@@ -16,6 +17,7 @@ class QTableWidget;
 
 namespace microsim::gui {
 
+class EndProductPanel;
 class ReplayControls;
 class ReplayPlayer;
 class Viewport;
@@ -36,6 +38,7 @@ class AttemptDetailView : public QWidget {
 
   QTableWidget* metricsTable() const { return metrics_; }
   QTableWidget* piercesTable() const { return pierces_; }
+  EndProductPanel* endProductPanel() const { return endProduct_; }
   QListWidget* annotationsList() const { return annotations_; }
   QPlainTextEdit* noteEditor() const { return note_; }
   QPushButton* addNoteButton() const { return addNote_; }
@@ -63,6 +66,7 @@ class AttemptDetailView : public QWidget {
   QLabel* neverEvents_ = nullptr;
   QTableWidget* metrics_ = nullptr;
   QTableWidget* pierces_ = nullptr;
+  EndProductPanel* endProduct_ = nullptr;
   QListWidget* annotations_ = nullptr;
   QPlainTextEdit* note_ = nullptr;
   QPushButton* addNote_ = nullptr;

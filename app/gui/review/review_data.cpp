@@ -1,6 +1,7 @@
 #include "gui/review/review_data.h"
 
 #include "lesson/lesson.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include <QLocale>
 #include <QSet>
@@ -126,6 +127,14 @@ std::vector<PierceRow> pierceRows(const QList<assessment::StoredPierceValue>& va
   rows.reserve(byPierce.size());
   for (auto& [index, row] : byPierce) rows.push_back(std::move(row));
   return rows;
+}
+
+OpenedVessel openedVessel(const assessment::AttemptDetail& detail) {
+  OpenedVessel v;
+  v.passages = assessment::storedPassages(detail.pierces);
+  v.stitches = assessment::stitchMetrics(v.passages);
+  v.errors.assign(detail.endProduct.errors.begin(), detail.endProduct.errors.end());
+  return v;
 }
 
 }  // namespace microsim::gui

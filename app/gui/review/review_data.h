@@ -14,6 +14,7 @@
 //   "both": [target − tolerance, target + tolerance].
 
 #include "gui/pages/lesson_status.h"
+#include "gui/pages/opened_vessel_image.h"
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/storage/history_types.h"
 
@@ -104,5 +105,9 @@ struct PierceRow {
 
 /// Groups the stored per-pierce values by pierce, in pierce order.
 std::vector<PierceRow> pierceRows(const QList<assessment::StoredPierceValue>& values);
+
+/// A stored attempt's opened vessel: its passages from the stored pierce values, their
+/// stitches as the scorer paired them (stitchMetrics), and its stored end-product errors.
+OpenedVessel openedVessel(const assessment::AttemptDetail& detail);
 
 }  // namespace microsim::gui

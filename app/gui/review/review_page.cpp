@@ -10,6 +10,7 @@
 #include "microsim/assessment/storage/attempt_detail.h"
 #include "microsim/assessment/storage/attempt_store.h"
 #include "microsim/assessment/storage/people_store.h"
+#include "microsim/assessment/storage/score_store.h"
 
 #include <QComboBox>
 #include <QFileDialog>
@@ -336,9 +337,17 @@ bool ReviewPage::exportPdf() {
                                         tr("PDF files (*.pdf)"));
     if (path.isEmpty()) return false;
   }
-  TraineeReport report{*trainee, {}};
+  TraineeReport report{*trainee, {}, {}};
+  assessment::ScoreStore scores(history_);
   for (const AttemptSummary& a : attempts_) {
-    if (a.traineeId == trainee->id) report.attempts << a;
+    if (a.traineeId != trainee->id) continue;
+    report.attempts << a;
+    // the opened vessel of an attempt whose end product has errors (its pierces read only then)
+    if (!a.score) continue;
+    const std::optional<assessment::StoredEndProduct> endProduct = scores.endProduct(viewer_, a.id);
+    if (!endProduct || endProduct->errors.isEmpty()) continue;
+    if (const auto detail = assessment::readAttemptDetail(history_, viewer_, a.id))
+      report.endProducts.insert(a.id, openedVessel(*detail));
   }
   QString error;
   if (!ReviewReport::writePdf(report, *catalog_, path, &error)) {

@@ -1,5 +1,6 @@
 #include "gui/review/review_report.h"
 
+#include "gui/pages/end_product_panel.h"
 #include "gui/review/review_charts.h"
 #include "gui/review/review_text.h"
 #include "gui/save_file.h"
@@ -14,6 +15,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 
@@ -79,6 +81,20 @@ class ReportPainter {
     scene.render(&p_, QRectF(page_.left(), y_, page_.width(), h), chart->rect());
     scene.removeItem(chart);
     y_ += h;
+  }
+
+  // a picture `widthFraction` of the page wide, its aspect kept
+  void image(const QImage& picture, double widthFraction) {
+    const double w = page_.width() * widthFraction;
+    const double h = w * picture.height() / std::max(1, picture.width());
+    reserve(h);
+    p_.drawImage(QRectF(page_.left(), y_, w, h), picture);
+    y_ += h;
+  }
+
+  void newPage() {
+    newPage_();
+    y_ = page_.top();
   }
 
   void space(double lines) { y_ += lines * line_; }
@@ -181,6 +197,37 @@ bool ReviewReport::writePdf(const TraineeReport& report, const ReviewCatalog& ca
     r.space(1);
     r.chart(chart.get());
   }
+  // the end products with errors, each opened and listed
+  bool first = true;
+  number = 0;
+  for (const assessment::AttemptSummary& a : report.attempts) {
+    ++number;
+    const auto it = report.endProducts.constFind(a.id);
+    if (it == report.endProducts.constEnd() || it->errors.empty()) continue;
+    if (first) {
+      r.newPage();
+      r.text(tr("End product"), 13, true);
+      r.text(tr("Each vessel cut along its axis and laid flat: 0° faces the microscope, the back "
+                "wall is shaded."),
+             9);
+      first = false;
+    }
+    const ReviewLesson* lesson = catalog.lesson(a.lesson);
+    r.space(0.5);
+    r.text(tr("Attempt %1: %2, %3")
+               .arg(number)
+               .arg(lesson ? lesson->title : a.lesson,
+                    locale.toString(a.started.toLocalTime(), QLocale::ShortFormat)),
+           11, true);
+    // as on the screen, at three pixels to each of the screen's, so that it stays sharp on paper
+    const QImage picture = OpenedVesselImage::draw(*it, EndProductPanel::imageSize(), 3.0);
+    r.image(picture, 0.8);
+    const QList<double> errorWidths{0.06, 0.3, 0.32, 0.32};
+    r.row(EndProductPanel::columnTitles(), errorWidths, true);
+    for (std::size_t i = 0; i < it->errors.size(); ++i)
+      r.row(EndProductPanel::rowTexts(i, it->errors[i]), errorWidths, false);
+  }
+
   if (!painter.end() || !file.commit(why)) {
     file.cancel();
     fail(error, why.isEmpty() ? tr("Cannot write %1.").arg(path) : tr("Cannot write %1: %2").arg(path, why));

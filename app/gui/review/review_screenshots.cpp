@@ -1,5 +1,7 @@
 #include "gui/review/review_screenshots.h"
 
+#include "gui/pages/end_product_panel.h"
+#include "gui/review/attempt_detail_view.h"
 #include "gui/review/review_page.h"
 #include "lesson/lesson.h"
 #include "microsim/assessment/scoring/score.h"
@@ -15,6 +17,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 
+#include <limits>
 #include <variant>
 
 namespace microsim::gui {
@@ -43,6 +46,28 @@ assessment::AttemptScore demoScore(const assessment::Rubric& rubric, const std::
     p.fullThickness = true;
     score.pierces.push_back(p);
   }
+  return score;
+}
+
+// Ana's first stitch as the opened vessel shows it: both bites on the back wall, 21° apart and
+// too wide, and a tear the wall cannot place
+assessment::AttemptScore withFlawedEndProduct(assessment::AttemptScore score) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i < 2 && i < int(score.pierces.size()); ++i) {
+    assessment::PierceMetrics& p = score.pierces[std::size_t(i)];
+    p.entry = 2 * i;
+    p.exit = 2 * i + 1;
+    p.vessel = 0;
+    p.object = 0;
+    p.end = i;
+    p.circumferenceDeg = 176.0 + 21.0 * i;
+    p.backWall = true;
+  }
+  using K = assessment::EndProductErrorKind;
+  score.endProduct = {
+      {K::BackWallStitch, 0, 0, -1, 176.0, nan, nan},   {K::WideBite, 0, 0, -1, 176.0, 3.8, 3.0},
+      {K::BackWallStitch, 0, 1, -1, 197.0, nan, nan},   {K::WideBite, 0, 1, -1, 197.0, 4.1, 3.0},
+      {K::ObliqueStitch, 0, -1, -1, 186.5, 21.0, 15.0}, {K::WallTear, -1, -1, 5, nan, 3.0, nan}};
   return score;
 }
 
@@ -84,7 +109,16 @@ bool fillDemoHistory(assessment::HistoryDatabase& db, qint64& instructor) {
     ok = ok && add(*ana, *entry, i < 2 ? AttemptMode::Learn : AttemptMode::Test,
                    {{"entry_angle", anaAngles[i]}, {"time", anaTimes[i]}, {"bite_walls", anaBites[i]}});
   }
-  ok = ok && add(*ana, *stitch, AttemptMode::Learn, {{"entry_angle", 28}, {"time", 150}, {"bite_walls", 3.8}});
+  if (const auto id =
+          attempts.begin(*ana, QString::fromStdString(stitch->id), AttemptMode::Learn)) {
+    ok = ok &&
+         scores.finish(*id,
+                       withFlawedEndProduct(demoScore(
+                           *stitch, {{"entry_angle", 28}, {"time", 150}, {"bite_walls", 3.8}})),
+                       {});
+  } else {
+    ok = false;
+  }
   // Ben passes orientation, struggles with entry
   ok = ok && add(*ben, *orientation, AttemptMode::Test, {{"time", 160}, {"path_length", 210}});
   ok = ok && add(*ben, *orientation, AttemptMode::Test, {{"time", 85}, {"path_length", 120}});
@@ -134,6 +168,15 @@ QStringList writeReviewScreenshots(const QString& directory, const ScreenInspect
                   QStringLiteral("Better: the needle now enters almost perpendicular. Watch the bite length."));
       page.showAttempt(attempts[2].id);
       if (!saveReviewShot(page, out.filePath(QStringLiteral("review-attempt.png")), written, inspect)) return {};
+    }
+    // Ana's stitch, its end product opened
+    if (!attempts.isEmpty()) {
+      page.showAttempt(attempts.back().id);
+      if (auto* tabs = page.detailView()->findChild<QTabWidget*>())
+        tabs->setCurrentWidget(page.detailView()->endProductPanel());
+      if (!saveReviewShot(page, out.filePath(QStringLiteral("review-end-product.png")), written,
+                          inspect))
+        return {};
     }
   }
   return written;

@@ -9,7 +9,8 @@
 
 namespace microsim::gui {
 
-/// Writes review-grid.png, review-history.png and review-attempt.png to `directory`;
+/// Writes review-grid.png, review-history.png, review-attempt.png and review-end-product.png
+/// (an attempt's opened vessel with its errors) to `directory`;
 /// returns the files written, empty on failure. Needs a QApplication and a display.
 /// `inspect` sees each screen before it is captured.
 QStringList writeReviewScreenshots(const QString& directory, const ScreenInspector& inspect = {});

@@ -216,6 +216,14 @@ std::string_view endProductErrorKey(EndProductErrorKind kind) {
   return "";
 }
 
+std::optional<EndProductErrorKind> endProductErrorKindFromKey(std::string_view key) {
+  const auto kinds = endProductErrorKinds();
+  const auto it = std::find_if(kinds.begin(), kinds.end(), [key](EndProductErrorKind k) {
+    return endProductErrorKey(k) == key;
+  });
+  return it == kinds.end() ? std::nullopt : std::optional<EndProductErrorKind>(*it);
+}
+
 std::string_view endProductErrorUnit(EndProductErrorKind kind) {
   switch (kind) {
     case LapseKind::SutureLineDisruption:

@@ -29,6 +29,7 @@ std::optional<AttemptDetail> readAttemptDetail(HistoryDatabase& database, const 
   d.metrics = std::move(score->metrics);
   d.pierces = std::move(score->pierces);
   d.neverEvents = std::move(score->neverEvents);
+  d.endProduct = std::move(score->endProduct);
   d.recording = std::move(score->recording);
   d.annotations = std::move(*annotations);
   if (status) *status = {};

@@ -8,6 +8,8 @@
 #include <QSqlError>
 #include <QSqlQuery>
 
+#include <cmath>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -34,15 +36,55 @@ std::vector<std::pair<const char*, double>> pierceValues(const PierceMetrics& p)
           {"back_wall", p.backWall ? 1.0 : 0.0}};
 }
 
+// one stored value put back in its field; the keys are pierceValues'
+void setPierceValue(PierceMetrics& p, const QString& key, double v) {
+  const auto index = [v] { return std::isfinite(v) ? static_cast<int>(std::lround(v)) : -1; };
+  const auto surface = [v] {
+    return std::isfinite(v) ? static_cast<sim::VesselSurface>(std::lround(v))
+                            : sim::VesselSurface::NotAVessel;
+  };
+  if (key == QLatin1String("entry"))
+    p.entry = index();
+  else if (key == QLatin1String("exit"))
+    p.exit = index();
+  else if (key == QLatin1String("time_s"))
+    p.time = v;
+  else if (key == QLatin1String("vessel"))
+    p.vessel = index();
+  else if (key == QLatin1String("object"))
+    p.object = index();
+  else if (key == QLatin1String("end"))
+    p.end = index();
+  else if (key == QLatin1String("entry_surface"))
+    p.entrySurface = surface();
+  else if (key == QLatin1String("exit_surface"))
+    p.exitSurface = surface();
+  else if (key == QLatin1String("entry_angle_deg"))
+    p.entryAngleDeg = v;
+  else if (key == QLatin1String("exit_angle_deg"))
+    p.exitAngleDeg = v;
+  else if (key == QLatin1String("bite_mm"))
+    p.biteMm = v;
+  else if (key == QLatin1String("bite_walls"))
+    p.biteWalls = v;
+  else if (key == QLatin1String("circumference_deg"))
+    p.circumferenceDeg = v;
+  else if (key == QLatin1String("full_thickness"))
+    p.fullThickness = v > 0.5;
+  else if (key == QLatin1String("back_wall"))
+    p.backWall = v > 0.5;
+}
+
 // writes the score's rows inside the caller's transaction; the driver's text on failure
 QString insertScore(const QSqlDatabase& db, qint64 attemptId, const AttemptScore& score,
                     const QByteArray& recording) {
   QSqlQuery q(db);
   QStringList neverEvents;
   for (const std::string& key : score.neverEvents) neverEvents << QString::fromStdString(key);
-  q.prepare(QStringLiteral(
-      "INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version, never_events, truncated) "
-      "VALUES (?, ?, ?, ?, ?, ?, ?)"));
+  q.prepare(
+      QStringLiteral("INSERT INTO scores (attempt_id, score, passed, rubric_id, rubric_version, "
+                     "never_events, truncated, "
+                     "end_product_judged) VALUES (?, ?, ?, ?, ?, ?, ?, 1)"));
   q.addBindValue(attemptId);
   q.addBindValue(score.score);
   q.addBindValue(score.passed ? 1 : 0);
@@ -81,6 +123,24 @@ QString insertScore(const QSqlDatabase& db, qint64 attemptId, const AttemptScore
     }
   }
 
+  q.prepare(
+      QStringLiteral("INSERT INTO score_end_product (attempt_id, position, kind, stitch, passage, "
+                     "event, angle_deg, measured, "
+                     "limit_value) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)"));
+  for (std::size_t i = 0; i < score.endProduct.size(); ++i) {
+    const EndProductError& e = score.endProduct[i];
+    q.addBindValue(attemptId);
+    q.addBindValue(int(i));
+    q.addBindValue(QString::fromLatin1(endProductErrorKey(e.kind)));
+    q.addBindValue(sql::index(e.stitch));
+    q.addBindValue(sql::index(e.passage));
+    q.addBindValue(sql::index(e.event));
+    q.addBindValue(sql::real(e.angleDeg));
+    q.addBindValue(sql::real(e.measured));
+    q.addBindValue(sql::real(e.limit));
+    if (!q.exec()) return q.lastError().text();
+  }
+
   if (!recording.isEmpty()) {
     q.prepare(QStringLiteral("INSERT INTO recordings (attempt_id, data) VALUES (?, ?)"));
     q.addBindValue(attemptId);
@@ -90,7 +150,51 @@ QString insertScore(const QSqlDatabase& db, qint64 attemptId, const AttemptScore
   return {};
 }
 
+// the end-product rows of one attempt; nullopt with the driver's text in `error` on failure
+std::optional<StoredEndProduct> readEndProduct(const QSqlDatabase& db, qint64 attemptId,
+                                               QString* error) {
+  StoredEndProduct out;
+  QSqlQuery q(db);
+  q.prepare(QStringLiteral("SELECT end_product_judged FROM scores WHERE attempt_id = ?"));
+  q.addBindValue(attemptId);
+  if (!q.exec()) return *error = q.lastError().text(), std::nullopt;
+  out.judged = q.next() && q.value(0).toInt() == 1;
+  if (!out.judged) return out;
+
+  q.prepare(
+      QStringLiteral("SELECT kind, stitch, passage, event, angle_deg, measured, limit_value FROM "
+                     "score_end_product "
+                     "WHERE attempt_id = ? ORDER BY position"));
+  q.addBindValue(attemptId);
+  if (!q.exec()) return *error = q.lastError().text(), std::nullopt;
+  while (q.next()) {
+    // a kind this build does not know (written by a newer one) is left out
+    const std::optional<EndProductErrorKind> kind =
+        endProductErrorKindFromKey(q.value(0).toString().toStdString());
+    if (!kind) continue;
+    EndProductError e;
+    e.kind = *kind;
+    e.stitch = sql::indexOrNone(q.value(1));
+    e.passage = sql::indexOrNone(q.value(2));
+    e.event = sql::indexOrNone(q.value(3));
+    e.angleDeg = sql::realOrNan(q.value(4));
+    e.measured = sql::realOrNan(q.value(5));
+    e.limit = sql::realOrNan(q.value(6));
+    out.errors << e;
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<PierceMetrics> storedPassages(const QList<StoredPierceValue>& values) {
+  std::map<int, PierceMetrics> byPierce;
+  for (const StoredPierceValue& v : values) setPierceValue(byPierce[v.pierce], v.key, v.value);
+  std::vector<PierceMetrics> out;
+  out.reserve(byPierce.size());
+  for (const auto& [pierce, p] : byPierce) out.push_back(p);
+  return out;
+}
 
 bool ScoreStore::finish(qint64 attemptId, const AttemptScore& score, const QByteArray& recording) {
   if (!requireOpen()) return false;
@@ -131,6 +235,7 @@ std::optional<StoredScore> ScoreStore::load(const Viewer& viewer, qint64 attempt
     return fail(s.error, s.driverMessage), std::nullopt;
 
   StoredScore out;
+  QString error;
   QSqlQuery q(db);
   q.prepare(QStringLiteral(
       "SELECT metric, value, unit, target, tolerance, weight, points, feedback FROM score_metrics "
@@ -154,10 +259,26 @@ std::optional<StoredScore> ScoreStore::load(const Viewer& viewer, qint64 attempt
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
   if (q.next()) out.neverEvents = q.value(0).toString().split(QLatin1Char(' '), Qt::SkipEmptyParts);
 
+  std::optional<StoredEndProduct> endProduct = readEndProduct(db, attemptId, &error);
+  if (!endProduct) return fail(HistoryError::QueryFailed, error), std::nullopt;
+  out.endProduct = std::move(*endProduct);
+
   q.prepare(QStringLiteral("SELECT data FROM recordings WHERE attempt_id = ?"));
   q.addBindValue(attemptId);
   if (!q.exec()) return fail(HistoryError::QueryFailed, q.lastError().text()), std::nullopt;
   if (q.next()) out.recording = q.value(0).toByteArray();
+  succeed();
+  return out;
+}
+
+std::optional<StoredEndProduct> ScoreStore::endProduct(const Viewer& viewer, qint64 attemptId) {
+  if (!requireOpen()) return std::nullopt;
+  const QSqlDatabase db = db_.connection();
+  if (const HistoryStatus s = access::mayViewAttempt(db, viewer, attemptId); !s.ok())
+    return fail(s.error, s.driverMessage), std::nullopt;
+  QString error;
+  std::optional<StoredEndProduct> out = readEndProduct(db, attemptId, &error);
+  if (!out) return fail(HistoryError::QueryFailed, error), std::nullopt;
   succeed();
   return out;
 }

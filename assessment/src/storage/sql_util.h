@@ -69,4 +69,12 @@ inline double realOrNan(const QVariant& v) {
   return v.isNull() ? std::numeric_limits<double>::quiet_NaN() : v.toDouble();
 }
 
+/// A 0-based index, or NULL for none (−1).
+inline QVariant index(int i) {
+  return i >= 0 ? QVariant(i) : QVariant(QMetaType(QMetaType::Int));
+}
+inline int indexOrNone(const QVariant& v) {
+  return v.isNull() ? -1 : v.toInt();
+}
+
 }  // namespace microsim::assessment::sql

@@ -92,7 +92,7 @@ TEST(MetricVocabulary, ResultsAndReviewPagesShowTheSameLabelForEachMetric) {
   AttemptDetailView review;
   review.setAttempt(detail, QStringLiteral("Ana"), QStringLiteral("Lesson"), QString(), false);
 
-  const auto* resultsTable = results.findChild<QTableWidget*>();
+  const auto* resultsTable = results.findChild<QTableWidget*>(QStringLiteral("metricTable"));
   ASSERT_NE(resultsTable, nullptr);
   const QTableWidget* reviewTable = review.metricsTable();
   const int rows = int(assessment::metricCatalogue().size());

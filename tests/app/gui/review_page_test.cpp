@@ -1,10 +1,12 @@
 // The review page on a real temporary SQLite history: two trainees with finished attempts
 // scored through the scoring API, an instructor signed in with a password.
+#include "gui/review/review_page.h"
+#include "gui/pages/end_product_panel.h"
 #include "gui/pages/sign_in_page.h"
 #include "gui/review/attempt_detail_view.h"
 #include "gui/review/replay_player.h"
 #include "gui/review/review_charts.h"
-#include "gui/review/review_page.h"
+#include "gui/review/review_data.h"
 #include "gui/review/review_text.h"
 #include "gui/review/trainee_history_view.h"
 #include "gui/simulation_runner.h"
@@ -22,6 +24,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QListWidget>
@@ -34,6 +37,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <utility>
 #include <variant>
 
 namespace microsim::gui {
@@ -377,6 +382,110 @@ TEST_F(ReviewPageTest, PdfReportIsWritten) {
   const QByteArray bytes = file.readAll();
   EXPECT_TRUE(bytes.startsWith("%PDF-"));
   EXPECT_GT(bytes.size(), 2000);
+}
+
+// pages and embedded pictures of a PDF, read from its objects' dictionaries (not compressed)
+std::pair<int, int> pdfPagesAndImages(const QString& path) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly)) return {-1, -1};
+  const QByteArray bytes = file.readAll();
+  return {int(bytes.count("/Type /Page\n") + bytes.count("/Type /Page\r") +
+              bytes.count("/Type /Page ") + bytes.count("/Type /Page/")),
+          int(bytes.count("/Subtype /Image"))};
+}
+
+// Ana's stitch with two end-product errors: a back-wall catch on its second passage and a
+// tear that has no place
+assessment::AttemptScore scoreWithEndProductErrors(const assessment::Rubric& r) {
+  assessment::AttemptScore s = score(r, 20.0, 80.0);
+  assessment::PierceMetrics second = s.pierces[0];
+  s.pierces[0].entry = 0;
+  s.pierces[0].exit = 1;
+  s.pierces[0].vessel = 0;
+  s.pierces[0].object = 0;
+  s.pierces[0].end = 0;
+  s.pierces[0].circumferenceDeg = 170.0;
+  second.entry = 2;
+  second.exit = 3;
+  second.vessel = 0;
+  second.object = 0;
+  second.end = 1;
+  second.circumferenceDeg = 186.0;
+  second.backWall = true;
+  s.pierces.push_back(second);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s.endProduct = {{assessment::EndProductErrorKind::BackWallStitch, 0, 1, -1, 186.0, nan, nan},
+                  {assessment::EndProductErrorKind::WallTear, -1, -1, 4, nan, 1.0, nan}};
+  return s;
+}
+
+TEST_F(ReviewPageTest, EndProductErrorsReachTheAttemptViewTheCsvAndThePdf) {
+  const Viewer instructor = signInInstructor();
+  const QString clean = dir_.filePath(QStringLiteral("clean.pdf"));
+  {
+    ReviewPage page(history_, instructor);
+    page.showTrainee(ana_);
+    page.setPdfPath(clean);
+    ASSERT_TRUE(page.exportPdf()) << page.message().toStdString();
+  }
+  finish(ana_, QStringLiteral("03_single_stitch"), AttemptMode::Test,
+         scoreWithEndProductErrors(rubric(QStringLiteral("03_single_stitch"))));
+  const AttemptSummary flawed = assessment::AttemptStore(history_).list(instructor, ana_).back();
+
+  ReviewPage page(history_, instructor);
+  // the attempt view: the stitch rebuilt from the stored passages, both errors listed
+  page.showAttempt(flawed.id);
+  EndProductPanel* panel = page.detailView()->endProductPanel();
+  ASSERT_NE(panel, nullptr);
+  ASSERT_EQ(panel->errorTable()->rowCount(), 2);
+  EXPECT_EQ(panel->errorTable()->item(0, 1)->text(), QStringLiteral("back-wall stitch"));
+  EXPECT_EQ(panel->errorTable()->item(0, 2)->text(), QStringLiteral("stitch 1, pierce 2, at 186°"));
+  EXPECT_EQ(panel->errorTable()->item(1, 1)->text(), QStringLiteral("wall tear"));
+  EXPECT_EQ(panel->errorTable()->item(1, 2)->text(), QStringLiteral("not located"));
+  const OpenedVessel vessel =
+      openedVessel(*assessment::readAttemptDetail(history_, instructor, flawed.id));
+  ASSERT_EQ(vessel.stitches.size(), 1u);
+  EXPECT_EQ(vessel.stitches[0].first, 0);
+  EXPECT_EQ(vessel.stitches[0].second, 1);
+  EXPECT_FALSE(panel->image().isNull());
+  // a clean stored attempt says so
+  page.showAttempt(assessment::AttemptStore(history_).list(instructor, ana_)[0].id);
+  EXPECT_EQ(panel->summaryLabel()->text(), QStringLiteral("No end-product errors."));
+
+  // the CSV: the old columns in their order, then the count and the kinds
+  const QList<QStringList> records = exportedCsv(page, QStringLiteral("errors.csv"));
+  ASSERT_GE(records.size(), 2);
+  ASSERT_EQ(records[0].size(), 14);
+  EXPECT_EQ(records[0][11], QStringLiteral("rubric_version"));
+  EXPECT_EQ(records[0][12], QStringLiteral("end_product_errors"));
+  EXPECT_EQ(records[0][13], QStringLiteral("end_product_kinds"));
+  int checked = 0;
+  for (const QStringList& r : records) {
+    if (r.size() < 14 || r[0] == QStringLiteral("attempt")) continue;
+    if (r[0] == QString::number(flawed.id)) {
+      EXPECT_EQ(r[12], QStringLiteral("2"));
+      EXPECT_EQ(r[13], QStringLiteral("back_wall_stitch wall_tear"));
+    } else if (r[5] == QStringLiteral("finished")) {
+      EXPECT_EQ(r[12], QStringLiteral("0"));
+      EXPECT_EQ(r[13], QString());
+    } else {
+      EXPECT_EQ(r[12], QString());
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 7);
+
+  // the PDF: a page more, with the opened vessel drawn on it
+  page.showTrainee(ana_);
+  const QString flawedPdf = dir_.filePath(QStringLiteral("flawed.pdf"));
+  page.setPdfPath(flawedPdf);
+  ASSERT_TRUE(page.exportPdf()) << page.message().toStdString();
+  const auto [cleanPages, cleanImages] = pdfPagesAndImages(clean);
+  const auto [flawedPages, flawedImages] = pdfPagesAndImages(flawedPdf);
+  EXPECT_GE(cleanPages, 1);
+  EXPECT_EQ(cleanImages, 0);
+  EXPECT_GT(flawedPages, cleanPages);
+  EXPECT_GE(flawedImages, 1);
 }
 
 // a full disk (/dev/full: every write fails with ENOSPC): each export says so, naming the

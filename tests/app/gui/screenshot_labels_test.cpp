@@ -82,6 +82,7 @@ void expectEveryLabelFits(const QString& language) {
   EXPECT_GE(written.size(), 8);
   EXPECT_TRUE(written.contains(QStringLiteral("results.png")));
   EXPECT_TRUE(written.contains(QStringLiteral("review-attempt.png")));
+  EXPECT_TRUE(written.contains(QStringLiteral("review-end-product.png")));
   EXPECT_TRUE(problems.isEmpty()) << language.toStdString() << ":\n" << problems.join(QLatin1Char('\n')).toStdString();
 }
 

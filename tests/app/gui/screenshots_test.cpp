@@ -22,7 +22,7 @@ TEST(Screenshots, WritesEveryMainScreen) {
   QTemporaryDir dir;
   QString error;
   const QStringList files = writeScreenshots(dir.path(), &error, 1024, 640);
-  ASSERT_EQ(files.size(), 10) << error.toStdString();
+  ASSERT_EQ(files.size(), 11) << error.toStdString();
   QStringList names;
   for (const QString& f : files) {
     names << QFileInfo(f).fileName();
@@ -34,11 +34,13 @@ TEST(Screenshots, WritesEveryMainScreen) {
       for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
     EXPECT_GT(colours.size(), 8u) << f.toStdString();
   }
-  EXPECT_EQ(names, (QStringList{QStringLiteral("sign-in.png"), QStringLiteral("lessons.png"),
-                                QStringLiteral("attempt-learn.png"), QStringLiteral("microscope-top.png"),
-                                QStringLiteral("microscope-oblique.png"), QStringLiteral("results.png"),
-                                QStringLiteral("settings.png"), QStringLiteral("review-grid.png"),
-                                QStringLiteral("review-history.png"), QStringLiteral("review-attempt.png")}));
+  EXPECT_EQ(names,
+            (QStringList{QStringLiteral("sign-in.png"), QStringLiteral("lessons.png"),
+                         QStringLiteral("attempt-learn.png"), QStringLiteral("microscope-top.png"),
+                         QStringLiteral("microscope-oblique.png"), QStringLiteral("results.png"),
+                         QStringLiteral("settings.png"), QStringLiteral("review-grid.png"),
+                         QStringLiteral("review-history.png"), QStringLiteral("review-attempt.png"),
+                         QStringLiteral("review-end-product.png")}));
   EXPECT_EQ(QImage(files[0]).width(), 1024);
 }
 

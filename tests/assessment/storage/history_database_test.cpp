@@ -28,7 +28,8 @@ TEST(HistoryDatabase, NewFileGetsEveryMigrationInWalMode) {
   EXPECT_GE(status.schemaVersion, 1);
   EXPECT_TRUE(QFile::exists(path));
   EXPECT_EQ(tablesOf(db.connection()).toStdString(),
-            "annotations,attempts,instructor_passwords,recordings,schema_migrations,score_metrics,"
+            "annotations,attempts,instructor_passwords,recordings,schema_migrations,score_end_"
+            "product,score_metrics,"
             "score_pierces,scores,setup_profiles,trainee_groups,trainees");
 
   QSqlQuery q(db.connection());

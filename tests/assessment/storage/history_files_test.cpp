@@ -157,6 +157,9 @@ TEST(HistoryFiles, SchemaThreeFileKeepsEveryRowAndItsGuardsWhenAbandonedArrives)
   QSqlQuery q(c);
   EXPECT_FALSE(q.exec(QStringLiteral("UPDATE attempts SET status = 'in_progress' WHERE id = 40")));
   EXPECT_FALSE(q.exec(QStringLiteral("UPDATE scores SET score = 100")));
+  // a score from before the end product was stored is not judged, rather than judged clean
+  EXPECT_FALSE(detail->endProduct.judged);
+  EXPECT_TRUE(detail->endProduct.errors.isEmpty());
   EXPECT_FALSE(q.exec(QStringLiteral("INSERT INTO recordings (attempt_id, data) VALUES (42, X'00')")));
   EXPECT_FALSE(q.exec(QStringLiteral("UPDATE attempts SET status = 'lost' WHERE id = 41")));
   ASSERT_TRUE(q.exec(QStringLiteral("PRAGMA foreign_keys")) && q.next());

@@ -303,9 +303,13 @@ TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
   const QStringList records = text.split(QStringLiteral("\r\n"));
   ASSERT_EQ(records.size(), 5);  // header, three attempts, and the empty rest after the last CRLF
   EXPECT_EQ(records[0].toStdString(),
-            "attempt,trainee,group,lesson,mode,status,started,finished,score,passed,rubric,rubric_version");
+            "attempt,trainee,group,lesson,mode,status,started,finished,score,passed,rubric,rubric_"
+            "version,"
+            "end_product_errors,end_product_kinds");
   EXPECT_TRUE(records[1].startsWith(QStringLiteral("%1,Ana,PGY-2,01_bite,test,finished,").arg(anaAttempt_)));
-  EXPECT_TRUE(records[1].endsWith(QStringLiteral(",82,1,anastomosis,3")));
+  // judged and clean: no errors, no kinds
+  EXPECT_TRUE(records[1].endsWith(QStringLiteral(",82,1,anastomosis,3,0,")))
+      << records[1].toStdString();
   EXPECT_TRUE(records[3].contains(QStringLiteral(",\"Doe, \"\"JD\"\"\nJohn\",,02_stitch,learn,in_progress,")));
   EXPECT_TRUE(records[4].isEmpty());
 
@@ -314,6 +318,81 @@ TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
   ASSERT_TRUE(exportAttemptsCsv(db_, {ben_, Role::Trainee}, own).ok());
   EXPECT_EQ(QString::fromUtf8(own.data()).count(QStringLiteral("\r\n")), 2);
   EXPECT_FALSE(own.data().contains("Ana"));
+}
+
+// the end product's errors come back as they were scored, NaN as NaN and "none" as −1, are
+// refused any change like the rest of a score, and the CSV counts and names them
+TEST_P(HistoryRoles, EndProductErrorsAreStoredReadBackAndExported) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  AttemptScore s = sampleScore(55);
+  s.endProduct = {{EndProductErrorKind::BackWallStitch, 0, 1, -1, 182.5, nan, nan},
+                  {EndProductErrorKind::WideBite, -1, 0, -1, 10.0, 3.4, 3.0},
+                  {EndProductErrorKind::WallTear, -1, -1, 7, nan, 1.0, nan}};
+  const qint64 id =
+      attempts_.begin(ben_, QStringLiteral("03_stitch"), AttemptMode::Test).value_or(0);
+  ASSERT_NE(id, 0);
+  ASSERT_TRUE(scores_.finish(id, s, {})) << scores_.lastError().driverMessage.toStdString();
+
+  const auto d = readAttemptDetail(db_, {ines_, Role::Instructor}, id);
+  ASSERT_TRUE(d.has_value());
+  ASSERT_TRUE(d->endProduct.judged);
+  ASSERT_EQ(d->endProduct.errors.size(), 3);
+  const EndProductError& back = d->endProduct.errors[0];
+  EXPECT_EQ(back.kind, EndProductErrorKind::BackWallStitch);
+  EXPECT_EQ(back.stitch, 0);
+  EXPECT_EQ(back.passage, 1);
+  EXPECT_EQ(back.event, -1);
+  EXPECT_DOUBLE_EQ(back.angleDeg, 182.5);
+  EXPECT_TRUE(std::isnan(back.measured) && std::isnan(back.limit));
+  EXPECT_EQ(d->endProduct.errors[1].kind, EndProductErrorKind::WideBite);
+  EXPECT_DOUBLE_EQ(d->endProduct.errors[1].measured, 3.4);
+  EXPECT_DOUBLE_EQ(d->endProduct.errors[1].limit, 3.0);
+  EXPECT_EQ(d->endProduct.errors[2].kind, EndProductErrorKind::WallTear);
+  EXPECT_EQ(d->endProduct.errors[2].event, 7);
+  EXPECT_TRUE(std::isnan(d->endProduct.errors[2].angleDeg));
+  // and the passages they refer to come back from the stored pierce values
+  const std::vector<PierceMetrics> passages = storedPassages(d->pierces);
+  ASSERT_EQ(passages.size(), 1u);
+  EXPECT_EQ(passages[0].entry, 0);
+  EXPECT_EQ(passages[0].exit, 1);
+  EXPECT_EQ(passages[0].vessel, 0);
+  EXPECT_DOUBLE_EQ(passages[0].time, 4.25);
+  EXPECT_DOUBLE_EQ(passages[0].biteMm, 0.3);
+  EXPECT_TRUE(std::isnan(passages[0].exitAngleDeg));
+  EXPECT_TRUE(passages[0].fullThickness);
+  EXPECT_FALSE(passages[0].backWall);
+
+  // a clean attempt is judged, with no errors; one never scored is not judged
+  const auto clean = readAttemptDetail(db_, {ana_, Role::Trainee}, anaAttempt_);
+  ASSERT_TRUE(clean.has_value());
+  EXPECT_TRUE(clean->endProduct.judged);
+  EXPECT_TRUE(clean->endProduct.errors.isEmpty());
+  const qint64 open =
+      attempts_.begin(ben_, QStringLiteral("03_stitch"), AttemptMode::Test).value_or(0);
+  EXPECT_FALSE(
+      scores_.endProduct({ben_, Role::Trainee}, open).value_or(StoredEndProduct{true, {}}).judged);
+  // nor may a trainee read another's
+  EXPECT_FALSE(scores_.endProduct({ana_, Role::Trainee}, id).has_value());
+  EXPECT_EQ(scores_.lastError().error, HistoryError::Forbidden);
+
+  QSqlQuery q(db_.connection());
+  EXPECT_FALSE(q.exec(QStringLiteral("UPDATE score_end_product SET kind = 'wall_tear'")));
+  q.prepare(QStringLiteral(
+      "INSERT INTO score_end_product (attempt_id, position, kind) VALUES (?, 9, 'wall_tear')"));
+  q.addBindValue(id);
+  EXPECT_FALSE(q.exec());
+
+  QBuffer csv;
+  csv.open(QIODevice::WriteOnly);
+  ASSERT_TRUE(exportAttemptsCsv(db_, {ben_, Role::Trainee}, csv).ok());
+  const QStringList records = QString::fromUtf8(csv.data()).split(QStringLiteral("\r\n"));
+  ASSERT_EQ(records.size(), 5);  // header, Ben's finished, scored and open attempts, the empty rest
+  EXPECT_TRUE(records[2].startsWith(QStringLiteral("%1,").arg(id))) << records[2].toStdString();
+  EXPECT_TRUE(records[2].endsWith(QStringLiteral(",3,back_wall_stitch wide_bite wall_tear")))
+      << records[2].toStdString();
+  // started, then empty: finished, score, passed, rubric, version, count, kinds
+  EXPECT_TRUE(records[3].contains(QStringLiteral(",in_progress,"))) << records[3].toStdString();
+  EXPECT_TRUE(records[3].endsWith(QStringLiteral("Z,,,,,,,"))) << records[3].toStdString();
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, HistoryRoles, ::testing::Values(Driver::SQLite, Driver::PostgreSQL),

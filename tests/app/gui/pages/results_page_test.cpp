@@ -2,6 +2,9 @@
 // German, never "26.9 s" beside "0,3 mm" (issue 20).
 #include "gui/pages/results_page.h"
 
+#include "gui/pages/end_product_panel.h"
+
+#include <QLabel>
 #include <QLocale>
 #include <QSettings>
 #include <QTableWidget>
@@ -66,6 +69,93 @@ TEST(ResultsPage, ShowsLengthsInTheChosenUnits) {
   QSettings().clear();
   ASSERT_EQ(values.size(), 2);
   EXPECT_EQ(values[1], QStringLiteral("300 µm (target 450 µm) | 62 %"));
+}
+
+// one stitch whose second passage caught the back wall, at 183° round the vessel
+AttemptResult backWallStitchResult() {
+  AttemptResult result = timeAndBiteResult();
+  assessment::PierceMetrics front;
+  front.end = 0;
+  front.circumferenceDeg = 175.0;
+  front.biteWalls = 2.4;
+  front.fullThickness = true;
+  assessment::PierceMetrics back = front;
+  back.end = 1;
+  back.circumferenceDeg = 183.0;
+  back.backWall = true;
+  result.score.pierces = {front, back};
+  assessment::StitchMetrics stitch;
+  stitch.first = 0;
+  stitch.second = 1;
+  stitch.positionDeg = 179.0;
+  result.score.stitches = {stitch};
+  assessment::EndProductError e;
+  e.kind = assessment::EndProductErrorKind::BackWallStitch;
+  e.stitch = 0;
+  e.passage = 1;
+  e.angleDeg = 183.0;
+  result.score.endProduct = {e};
+  return result;
+}
+
+TEST(ResultsPage, ListsABackWallStitchAndShowsTheOpenedVessel) {
+  QSettings().clear();
+  QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+  ResultsPage page;
+  page.show(backWallStitchResult(), QStringLiteral("Single stitch"));
+  const auto* panel = page.findChild<EndProductPanel*>(QStringLiteral("endProductPanel"));
+  ASSERT_NE(panel, nullptr);
+  const QTableWidget* table = panel->errorTable();
+  ASSERT_EQ(table->rowCount(), 1);
+  EXPECT_FALSE(table->isHidden());
+  EXPECT_EQ(table->item(0, 0)->text(), QStringLiteral("1"));
+  EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("back-wall stitch"));
+  EXPECT_EQ(table->item(0, 2)->text(), QStringLiteral("stitch 1, pierce 2, at 183°"));
+  EXPECT_EQ(table->item(0, 3)->text(), QStringLiteral("–"));
+  EXPECT_TRUE(panel->summaryLabel()->text().endsWith(QStringLiteral("Lapse Index): 1")))
+      << panel->summaryLabel()->text().toStdString();
+  // the opened vessel is drawn, with its one marker
+  const auto* picture = page.findChild<QLabel*>(QStringLiteral("openedVesselImage"));
+  ASSERT_NE(picture, nullptr);
+  EXPECT_FALSE(picture->pixmap().isNull());
+  EXPECT_EQ(panel->image().size(), EndProductPanel::imageSize());
+  const OpenedVesselLayout layout = OpenedVesselImage::layOut(
+      {backWallStitchResult().score.pierces, backWallStitchResult().score.stitches,
+       backWallStitchResult().score.endProduct},
+      EndProductPanel::imageSize());
+  ASSERT_EQ(layout.marks.size(), 1u);
+  EXPECT_GT(layout.marks[0].at.y(), layout.sutureLineY);  // the second passage, through end 2
+}
+
+TEST(ResultsPage, SaysWhenTheEndProductIsClean) {
+  QSettings().clear();
+  ResultsPage page;
+  page.show(timeAndBiteResult(), QStringLiteral("Needle entry"));
+  const auto* panel = page.findChild<EndProductPanel*>(QStringLiteral("endProductPanel"));
+  ASSERT_NE(panel, nullptr);
+  EXPECT_EQ(panel->summaryLabel()->text(), QStringLiteral("No end-product errors."));
+  EXPECT_EQ(panel->errorTable()->rowCount(), 0);
+  EXPECT_TRUE(panel->errorTable()->isHidden());
+}
+
+TEST(EndProductPanel, NamesWhatWasMeasuredAgainstItsLimit) {
+  const QLocale previous;
+  QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+  assessment::EndProductError wide;
+  wide.kind = assessment::EndProductErrorKind::WideBite;
+  wide.passage = 0;
+  wide.angleDeg = 12.4;
+  wide.measured = 3.44;
+  wide.limit = 3.0;
+  EXPECT_EQ(EndProductPanel::measured(wide), QStringLiteral("3,4 wall thicknesses (limit 3)"));
+  EXPECT_EQ(EndProductPanel::where(wide), QStringLiteral("pierce 1, at 12°"));
+  assessment::EndProductError tear;
+  tear.kind = assessment::EndProductErrorKind::WallTear;
+  tear.measured = 2;
+  EXPECT_EQ(EndProductPanel::measured(tear), QStringLiteral("links torn: 2"));
+  EXPECT_EQ(EndProductPanel::where(tear), QStringLiteral("not located"));
+  EXPECT_TRUE(EndProductPanel::summary({}, false).contains(QStringLiteral("not judged")));
+  QLocale::setDefault(previous);
 }
 
 }  // namespace

@@ -69,6 +69,8 @@ enum class EndProductErrorKind : std::uint8_t {
 std::span<const EndProductErrorKind> endProductErrorKinds();
 /// A stable key for files and programs: "suture_line_disruption", "back_wall_stitch", ...
 std::string_view endProductErrorKey(EndProductErrorKind kind);
+/// The kind whose endProductErrorKey is `key`; nullopt for a key no kind has.
+std::optional<EndProductErrorKind> endProductErrorKindFromKey(std::string_view key);
 /// The unit of an error's `measured` and `limit`: "mm", "deg", "walls", "1", "count", or ""
 /// for a kind that is a plain yes (both NaN).
 std::string_view endProductErrorUnit(EndProductErrorKind kind);

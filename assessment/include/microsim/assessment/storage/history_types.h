@@ -2,6 +2,8 @@
 // The rows the history hands out: people, attempts, stored scores and annotations.
 // Plain values; the stores (history_database.h) read and write them. Times are UTC.
 
+#include "microsim/assessment/scoring/end_product.h"
+
 #include <QByteArray>
 #include <QDateTime>
 #include <QList>
@@ -69,6 +71,14 @@ struct StoredPierceValue {
   double value = 0;
 };
 
+/// The finished anastomosis's errors (scoring/end_product.h) as stored with a score.
+struct StoredEndProduct {
+  /// false when the attempt was never judged so: not scored, or scored before the history
+  /// kept end-product errors (which is not the same as judged clean)
+  bool judged = false;
+  QList<EndProductError> errors;  ///< in the scorer's order
+};
+
 struct Annotation {
   qint64 id = 0;
   qint64 attemptId = 0;
@@ -84,6 +94,7 @@ struct AttemptDetail {
   QList<StoredMetric> metrics;
   QList<StoredPierceValue> pierces;
   QStringList neverEvents;
+  StoredEndProduct endProduct;
   QList<Annotation> annotations;
   QByteArray recording;  ///< the .msrec bytes; empty when none was stored
 };
