@@ -29,7 +29,7 @@ TEST(ResourceDirectory, TheBuildTreeLeadsToTheSourcesResources) {
   const QString found = resourceDirectoryFor({}, QCoreApplication::applicationDirPath());
   EXPECT_EQ(QFileInfo(found).canonicalFilePath(),
             QFileInfo(QStringLiteral(MICROSIM_SOURCE_DIR "/resources")).canonicalFilePath());
-  EXPECT_EQ(loadLessons(QDir(found).filePath(QStringLiteral("lessons"))).size(), 5u);
+  EXPECT_EQ(loadLessons(QDir(found).filePath(QStringLiteral("lessons"))).size(), 6u);
 }
 
 }  // namespace
