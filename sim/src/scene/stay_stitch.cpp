@@ -3,6 +3,7 @@
 #include "microsim/sim/collide/point_triangle.h"
 #include "microsim/sim/scene/scene_def.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -93,18 +94,26 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   LaidStayStitch laid;
   laid.shape.resize(3, model.nodeCount());
   Points& x = laid.shape;
-  // both free lengths leave the wall straight out, then lie beside the vessel, away from the
-  // gap and a little toward the circumference, clear of the wall
+  // both free lengths leave the wall straight out, then lie clear of the vessel where the
+  // microscope sees them: the tail away from the gap and toward the circumference; the long
+  // end first toward the circumference (about 1.6 mm, off the vessel), then along it away from
+  // the gap, so the needle lies inside the field of view rather than 4–5 mm down the vessel
   const Vec3 tailWay = (-a0 + 0.6 * around).normalized();
-  const Vec3 longWay = (-a1 + 0.6 * around).normalized();
+  const Vec3 longOut = around;
+  const Vec3 longWay = -a1;
+  const int outLinks = std::min(hole3 - 1 - n, static_cast<int>(std::lround(1.6 / link)));
   x.col(hole0) = out0;
   for (int i = hole0 + 1; i <= last; ++i)
     x.col(i) = out0 + link * radial + (i - hole0 - 1) * link * tailWay;
   for (int j = 0; j <= lumenLinks; ++j)
     x.col(hole1 - j) = in0 + (static_cast<double>(j) / lumenLinks) * (in1 - in0);
   x.col(hole3) = out1;
-  for (int i = hole3 - 1; i >= n; --i)
-    x.col(i) = out1 + link * radial + (hole3 - 1 - i) * link * longWay;
+  const Vec3 corner = out1 + link * radial + outLinks * link * longOut;
+  for (int i = hole3 - 1; i >= n; --i) {
+    const int along = hole3 - 1 - i;
+    x.col(i) = along <= outLinks ? Vec3(out1 + link * radial + along * link * longOut)
+                                 : Vec3(corner + (along - outLinks) * link * longWay);
+  }
 
   // the needle, flat (its plane ⟂ the radial direction), the thread leaving its swage along
   // the swage tangent toward the stitch
@@ -113,7 +122,7 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const Vec3 needleNormal = Vec3::UnitZ();
   Eigen::Matrix3d from;
   from << swageTangent, needleNormal, swageTangent.cross(needleNormal);
-  const Vec3 threadWay = -longWay;
+  const Vec3 threadWay = (x.col(n + 1) - x.col(n)).normalized();
   const Vec3 up = (radial - radial.dot(threadWay) * threadWay).normalized();
   Eigen::Matrix3d to;
   to << threadWay, up, threadWay.cross(up);
