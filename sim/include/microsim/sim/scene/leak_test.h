@@ -8,7 +8,9 @@
 // carry across the line; between stitches the cut edges, pushed apart and held only at the
 // stitches, bow open. The pressure on the inner wall swells the tube (hoop tension). Both are
 // modelled; the inner wall alone would draw the lips straight and narrow the gaps as the
-// pressure rises (the reverted first attempt, 057c793).
+// pressure rises (the reverted first attempt, 057c793). With both, a closed ring of 8
+// stitches still narrows a little from 0 to 50 mmHg (0.054 → 0.034 mm) before the thrust
+// opens it (0.040 mm at 200 mmHg); a ring with a stitch left out opens from 50 mmHg on.
 //
 // A conservative minimisation. Every load is a dead load, fixed in the rest configuration, so
 // the equilibrium is the minimum of one potential and Newton with a line search on it settles
