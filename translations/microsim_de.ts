@@ -1118,6 +1118,46 @@
         <source>limit</source>
         <translation>Grenze</translation>
     </message>
+    <message>
+        <source>the scene has no severed vessel</source>
+        <translation>die Szene hat kein durchtrenntes Gefäß</translation>
+    </message>
+    <message>
+        <source>no stitch joins the two ends</source>
+        <translation>keine Naht verbindet die beiden Enden</translation>
+    </message>
+    <message>
+        <source>a stitch names a face the tissue does not have</source>
+        <translation>eine Naht nennt eine Fläche, die das Gewebe nicht hat</translation>
+    </message>
+    <message>
+        <source>the pressurised wall did not settle</source>
+        <translation>die Wand unter Druck kam nicht ins Gleichgewicht</translation>
+    </message>
+    <message>
+        <source>the pressurised wall could not be solved</source>
+        <translation>die Wand unter Druck ließ sich nicht berechnen</translation>
+    </message>
+    <message>
+        <source>leak test</source>
+        <translation>Dichtigkeitsprüfung</translation>
+    </message>
+    <message>
+        <source>not done: %1</source>
+        <translation>nicht durchgeführt: %1</translation>
+    </message>
+    <message>
+        <source>%1 mmHg: largest gap %2 mm at %3°, limit %4 mm</source>
+        <translation>%1 mmHg: größter Spalt %2 mm bei %3°, Grenze %4 mm</translation>
+    </message>
+    <message>
+        <source>leaks</source>
+        <translation>undicht</translation>
+    </message>
+    <message>
+        <source>holds</source>
+        <translation>dicht</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -1118,6 +1118,46 @@
         <source>limit</source>
         <translation>límite</translation>
     </message>
+    <message>
+        <source>the scene has no severed vessel</source>
+        <translation>la escena no tiene ningún vaso seccionado</translation>
+    </message>
+    <message>
+        <source>no stitch joins the two ends</source>
+        <translation>ningún punto une los dos extremos</translation>
+    </message>
+    <message>
+        <source>a stitch names a face the tissue does not have</source>
+        <translation>un punto nombra una cara que el tejido no tiene</translation>
+    </message>
+    <message>
+        <source>the pressurised wall did not settle</source>
+        <translation>la pared presurizada no llegó al equilibrio</translation>
+    </message>
+    <message>
+        <source>the pressurised wall could not be solved</source>
+        <translation>la pared presurizada no se pudo resolver</translation>
+    </message>
+    <message>
+        <source>leak test</source>
+        <translation>prueba de estanqueidad</translation>
+    </message>
+    <message>
+        <source>not done: %1</source>
+        <translation>no realizada: %1</translation>
+    </message>
+    <message>
+        <source>%1 mmHg: largest gap %2 mm at %3°, limit %4 mm</source>
+        <translation>%1 mmHg: mayor separación %2 mm en %3°, límite %4 mm</translation>
+    </message>
+    <message>
+        <source>leaks</source>
+        <translation>hay fuga</translation>
+    </message>
+    <message>
+        <source>holds</source>
+        <translation>estanca</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -101,6 +101,72 @@ void printEndProduct(QTextStream& out, const as::AttemptScore& s) {
   }
 }
 
+// a stable key for the leak test's status, for the JSON
+const char* leakStatusKey(sim::LeakTestStatus status) {
+  using S = sim::LeakTestStatus;
+  switch (status) {
+    case S::Solved:
+      return "solved";
+    case S::NoSeveredVessel:
+      return "no_severed_vessel";
+    case S::NoStitches:
+      return "no_stitches";
+    case S::BadTie:
+      return "bad_tie";
+    case S::NotConverged:
+      return "not_converged";
+    case S::SolverFailed:
+      return "solver_failed";
+  }
+  return "";
+}
+
+// why a leak test gave no verdict
+QString leakNotDoneText(sim::LeakTestStatus status) {
+  using S = sim::LeakTestStatus;
+  switch (status) {
+    case S::Solved:
+      return {};
+    case S::NoSeveredVessel:
+      return Cli::tr("the scene has no severed vessel");
+    case S::NoStitches:
+      return Cli::tr("no stitch joins the two ends");
+    case S::BadTie:
+      return Cli::tr("a stitch names a face the tissue does not have");
+    case S::NotConverged:
+      return Cli::tr("the pressurised wall did not settle");
+    case S::SolverFailed:
+      return Cli::tr("the pressurised wall could not be solved");
+  }
+  return {};
+}
+
+void printLeakTest(QTextStream& out, const as::AttemptScore& s) {
+  if (!s.leak) return;
+  const as::LeakFinding& leak = *s.leak;
+  out << '\n' << Cli::tr("leak test") << "  ";
+  if (leak.status != sim::LeakTestStatus::Solved) {
+    out << Cli::tr("not done: %1").arg(leakNotDoneText(leak.status)) << '\n';
+    return;
+  }
+  out << Cli::tr("%1 mmHg: largest gap %2 mm at %3°, limit %4 mm")
+             .arg(number(leak.pressureMmHg, 0), number(leak.largestGapMm, 3),
+                  number(leak.angleDeg, 1), number(leak.limitMm, 3))
+      << "  " << (leak.leaks ? Cli::tr("leaks") : Cli::tr("holds")) << '\n';
+}
+
+// the leak test, or null when the attempt had none
+nlohmann::json leakJson(const as::AttemptScore& s) {
+  if (!s.leak) return nullptr;
+  const as::LeakFinding& leak = *s.leak;
+  return {{"status", leakStatusKey(leak.status)},
+          {"leaks", leak.leaks},
+          {"largest_gap_mm", jsonNumber(leak.largestGapMm)},
+          {"angle_deg", jsonNumber(leak.angleDeg)},
+          {"limit_mm", jsonNumber(leak.limitMm)},
+          {"pressure_mmhg", jsonNumber(leak.pressureMmHg)}};
+}
+
 nlohmann::json metricsJson(const as::AttemptScore& s) {
   nlohmann::json metrics = nlohmann::json::array();
   for (const as::MetricScore& m : s.metrics)
@@ -180,6 +246,7 @@ void printScoreReport(QTextStream& out, const as::AttemptScore& s, const as::Rub
   printPierces(out, s);
   out << '\n';
   printEndProduct(out, s);
+  printLeakTest(out, s);
 }
 
 nlohmann::json scoreReportJson(const as::AttemptScore& s, const as::Rubric& rubric,
@@ -197,6 +264,7 @@ nlohmann::json scoreReportJson(const as::AttemptScore& s, const as::Rubric& rubr
   doc["pierces"] = piercesJson(s);
   doc["stitches"] = stitchesJson(s);
   doc["end_product"] = endProductJson(s);
+  doc["leak"] = leakJson(s);
   return doc;
 }
 

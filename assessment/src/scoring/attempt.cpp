@@ -19,6 +19,18 @@ sim::Vec3 perpendicularToward(const sim::Vec3& axis, const sim::Vec3& toward) {
 
 }  // namespace
 
+LeakFinding leakFinding(const sim::LeakResult& result) {
+  LeakFinding f;
+  f.status = result.status;
+  f.pressureMmHg = result.pressureMmHg;
+  if (result.status != sim::LeakTestStatus::Solved) return f;
+  f.leaks = result.leak;
+  f.largestGapMm = result.largestGapMm;
+  f.angleDeg = result.angleDeg;
+  f.limitMm = result.thresholdMm;
+  return f;
+}
+
 std::vector<VesselGeometry> vesselGeometry(const sim::SceneDef& def) {
   std::vector<VesselGeometry> out;
   out.reserve(def.vessels.size());
@@ -139,6 +151,7 @@ std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def, const
   }
   Attempt a = recorder.attempt(scene);
   a.truncated = truncated;
+  a.leak = leakFinding(sim::leakTest(scene));
   return a;
 }
 

@@ -262,6 +262,7 @@ std::vector<EndProductError> endProductErrors(const Attempt& attempt,
     e.kind = LapseKind::SutureLineDisruption;
     e.angleDeg = leak->angleDeg;
     e.measured = leak->largestGapMm;
+    e.limit = leak->limitMm;
     out.push_back(e);
   }
   return out;

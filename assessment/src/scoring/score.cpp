@@ -82,6 +82,7 @@ AttemptScore scoreAttempt(const Attempt& attempt, const Rubric& rubric) {
   out.pierces = std::move(metrics.pierces);
   out.stitches = std::move(metrics.stitches);
   out.endProduct = std::move(metrics.endProduct);
+  out.leak = attempt.leak;
   out.truncated = attempt.truncated;
   return out;
 }

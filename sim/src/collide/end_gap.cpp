@@ -2,6 +2,9 @@
 
 #include "microsim/sim/scene/scene_def.h"
 
+#include <cmath>
+#include <numbers>
+
 namespace microsim::sim::collide {
 
 namespace {
@@ -15,13 +18,18 @@ Vec3 endGapRadial(const Vec3& p, const Vec3& origin, const Vec3& axis) {
   return n > 0.0 ? Vec3(r / n) : Vec3(Vec3::Zero());
 }
 
+/// The first node of `v`'s cut ring (the last ring) on `hull`: node index (ring·2 + hull)·P +
+/// sector (mesh/vessel.h).
+int cutRingFirst(const SceneVessel& v, VesselHull hull) {
+  return v.firstNode + ((v.def.rings - 1) * 2 + static_cast<int>(hull)) * v.def.nodesPerRing;
+}
+
 /// The outer cut-ring node of `v` whose rest radial direction is nearest d.
 int endGapLip(const SpringModel& model, const SceneVessel& v, const Vec3& d) {
   const int p = v.def.nodesPerRing;
   const Vec3 axis = v.def.direction.normalized();
   const auto rest = model.restPositions();
-  // node index (ring·2 + hull)·P + sector, hull Outer = 1 (mesh/vessel.h)
-  const int firstOuterCut = v.firstNode + ((v.def.rings - 1) * 2 + 1) * p;
+  const int firstOuterCut = cutRingFirst(v, VesselHull::Outer);
   int best = firstOuterCut;
   double bestCos = -2.0;
   for (int j = 0; j < p; ++j) {
@@ -39,9 +47,7 @@ int endGapLip(const SpringModel& model, const SceneVessel& v, const Vec3& d) {
 std::optional<EndGap> endGapAtStitch(const SpringModel& model, const Points& x,
                                      const std::vector<SceneVessel>& vessels,
                                      const std::vector<Vec3>& piercePoints) {
-  const SceneVessel* ends[2] = {nullptr, nullptr};
-  for (const SceneVessel& v : vessels)
-    if (v.end == 0 || v.end == 1) ends[v.end] = &v;
+  const auto ends = severedEnds(vessels);
   if (ends[0] == nullptr || ends[1] == nullptr) return std::nullopt;
 
   // the stitch's direction: the mean radial direction of the pierce points about end 0's axis
@@ -49,7 +55,7 @@ std::optional<EndGap> endGapAtStitch(const SpringModel& model, const Points& x,
   Vec3 d = Vec3::Zero();
   for (const Vec3& point : piercePoints) d += endGapRadial(point, ends[0]->def.origin, axis);
   if (d.norm() < 1e-12) {
-    const int sector0 = ends[0]->firstNode + ((ends[0]->def.rings - 1) * 2 + 1) * ends[0]->def.nodesPerRing;
+    const int sector0 = cutRingFirst(*ends[0], VesselHull::Outer);
     d = endGapRadial(model.restPositions().col(sector0), ends[0]->def.origin, axis);
   }
   d.normalize();
@@ -62,6 +68,33 @@ std::optional<EndGap> endGapAtStitch(const SpringModel& model, const Points& x,
   g.gap = (x.col(g.node1) - x.col(g.node0)).norm();
   g.restGap = (model.restPositions().col(g.node1) - model.restPositions().col(g.node0)).norm();
   return g;
+}
+
+std::array<const SceneVessel*, 2> severedEnds(const std::vector<SceneVessel>& vessels) {
+  std::array<const SceneVessel*, 2> ends{nullptr, nullptr};
+  for (const SceneVessel& v : vessels)
+    if (v.end == 0 || v.end == 1) ends[static_cast<std::size_t>(v.end)] = &v;
+  return ends;
+}
+
+Vec3 cutRingLip(const SpringModel& model, const Points& x, const SceneVessel& v, const Vec3& d,
+                VesselHull hull) {
+  const int p = v.def.nodesPerRing;
+  const int first = cutRingFirst(v, hull);
+  const auto rest = model.restPositions();
+
+  // d's angle in the ring's own frame: sector 0's rest direction, then right-handed about the axis
+  const Vec3 axis = v.def.direction.normalized();
+  const Vec3 e1 = endGapRadial(rest.col(first), v.def.origin, axis);
+  const Vec3 e2 = axis.cross(e1);
+  double turn = std::atan2(d.dot(e2), d.dot(e1)) / (2.0 * std::numbers::pi);
+  if (turn < 0.0) turn += 1.0;
+
+  // between the two sectors that flank it
+  const double s = turn * p;
+  const int j = static_cast<int>(std::floor(s)) % p;
+  const double f = s - std::floor(s);
+  return (1.0 - f) * x.col(first + j) + f * x.col(first + (j + 1) % p);
 }
 
 }  // namespace microsim::sim::collide

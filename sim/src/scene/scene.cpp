@@ -18,21 +18,6 @@ namespace microsim::sim {
 
 namespace {
 
-/// The vessel (index into `vessels`) and the surface of it that tissue face `face` lies on;
-/// none for a face of another object.
-std::optional<std::pair<int, VesselSurface>> vesselSurfaceOf(const std::vector<SceneVessel>& vessels, int face) {
-  const auto in = [face](const TriangleRange& r) { return face >= r.begin && face < r.end; };
-  for (std::size_t v = 0; v < vessels.size(); ++v) {
-    const SceneVessel& vessel = vessels[v];
-    const int index = static_cast<int>(v);
-    if (in(vessel.outerSurface)) return std::pair{index, VesselSurface::Outer};
-    if (in(vessel.innerSurface)) return std::pair{index, VesselSurface::Inner};
-    if (in(vessel.cutEnd)) return std::pair{index, VesselSurface::CutEnd};
-    if (in(vessel.clampedEnd)) return std::pair{index, VesselSurface::ClampedEnd};
-  }
-  return std::nullopt;
-}
-
 double steadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }

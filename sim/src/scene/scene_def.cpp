@@ -463,4 +463,18 @@ SceneDefLoad loadSceneDef(const std::string& path) {
   return parseSceneDef(text, path, base);
 }
 
+std::optional<std::pair<int, VesselSurface>> vesselSurfaceOf(
+    const std::vector<SceneVessel>& vessels, int face) {
+  const auto in = [face](const TriangleRange& r) { return face >= r.begin && face < r.end; };
+  for (std::size_t v = 0; v < vessels.size(); ++v) {
+    const SceneVessel& vessel = vessels[v];
+    const int index = static_cast<int>(v);
+    if (in(vessel.outerSurface)) return std::pair{index, VesselSurface::Outer};
+    if (in(vessel.innerSurface)) return std::pair{index, VesselSurface::Inner};
+    if (in(vessel.cutEnd)) return std::pair{index, VesselSurface::CutEnd};
+    if (in(vessel.clampedEnd)) return std::pair{index, VesselSurface::ClampedEnd};
+  }
+  return std::nullopt;
+}
+
 }  // namespace microsim::sim

@@ -70,6 +70,15 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
   EXPECT_TRUE(r.out.contains(QStringLiteral("end product  lapse index 0\n  none\n"))) << r.out.toStdString();
   ASSERT_TRUE(doc.value(QStringLiteral("end_product")).isArray());
   EXPECT_TRUE(doc.value(QStringLiteral("end_product")).toArray().isEmpty());
+  // the leak test on the final scene: one stitch holds the ends at one point, the line leaks
+  // opposite it (tests/sim/scene/leak_test_test.cpp)
+  EXPECT_TRUE(r.out.contains(QStringLiteral("leak test  100 mmHg: largest gap 2.285 mm at 190.0°")))
+      << r.out.toStdString();
+  const QJsonObject leak = doc.value(QStringLiteral("leak")).toObject();
+  EXPECT_EQ(leak.value(QStringLiteral("status")).toString(), QStringLiteral("solved"));
+  EXPECT_TRUE(leak.value(QStringLiteral("leaks")).toBool());
+  EXPECT_NEAR(leak.value(QStringLiteral("largest_gap_mm")).toDouble(), 2.285, 5e-4);
+  EXPECT_NEAR(leak.value(QStringLiteral("angle_deg")).toDouble(), 190.0, 1e-9);
 
   // the same every run
   const QString again = dir.filePath(QStringLiteral("again.json"));

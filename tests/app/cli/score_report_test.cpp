@@ -1,7 +1,8 @@
 // `microsim-cli score`'s report of the finished anastomosis: each end-product error is a row of
 // the table, named in words, with its stitch and pierce numbered as the pierces are (from 1),
 // its angle, measured value, limit and unit; the JSON gives the kind's stable key and 0-based
-// indices (null for none); no error prints "none" and an empty list.
+// indices (null for none); no error prints "none" and an empty list. The leak test is a line
+// after the table and an object in the JSON, null without one.
 #include "cli/score_report.h"
 
 #include <QString>
@@ -82,6 +83,53 @@ TEST(ScoreReport, NoEndProductErrorIsSaidSo) {
   EXPECT_TRUE(cli::scoreReportJson(as::AttemptScore{}, as::Rubric{}, cli::ScoredFiles{})
                   .at("end_product")
                   .empty());
+}
+
+as::AttemptScore scoreWithLeak(sim::LeakTestStatus status) {
+  as::AttemptScore s;
+  as::LeakFinding leak;
+  leak.status = status;
+  leak.pressureMmHg = 100.0;
+  if (status == sim::LeakTestStatus::Solved) {
+    leak.leaks = true;
+    leak.largestGapMm = 0.1234;
+    leak.angleDeg = 90.0;
+    leak.limitMm = 0.05;
+  }
+  s.leak = leak;
+  return s;
+}
+
+TEST(ScoreReport, TheLeakTestIsALineAfterTheTable) {
+  const QString text = scoreReportText(scoreWithLeak(sim::LeakTestStatus::Solved));
+  EXPECT_TRUE(text.endsWith(QStringLiteral(
+      "\nleak test  100 mmHg: largest gap 0.123 mm at 90.0°, limit 0.050 mm  leaks\n")))
+      << text.toStdString();
+  EXPECT_TRUE(scoreReportText(scoreWithLeak(sim::LeakTestStatus::NoStitches))
+                  .endsWith(QStringLiteral("leak test  not done: no stitch joins the two ends\n")));
+  EXPECT_FALSE(scoreReportText(as::AttemptScore{}).contains(QStringLiteral("leak test")));
+}
+
+TEST(ScoreReport, TheJsonGivesTheLeakTestOrNull) {
+  const nlohmann::json leak = cli::scoreReportJson(scoreWithLeak(sim::LeakTestStatus::Solved),
+                                                   as::Rubric{}, cli::ScoredFiles{})
+                                  .at("leak");
+  EXPECT_EQ(leak.at("status"), "solved");
+  EXPECT_EQ(leak.at("leaks"), true);
+  EXPECT_EQ(leak.at("largest_gap_mm"), 0.1234);
+  EXPECT_EQ(leak.at("angle_deg"), 90.0);
+  EXPECT_EQ(leak.at("limit_mm"), 0.05);
+  EXPECT_EQ(leak.at("pressure_mmhg"), 100.0);
+  const nlohmann::json none =
+      cli::scoreReportJson(scoreWithLeak(sim::LeakTestStatus::NoSeveredVessel), as::Rubric{},
+                           cli::ScoredFiles{})
+          .at("leak");
+  EXPECT_EQ(none.at("status"), "no_severed_vessel");
+  EXPECT_EQ(none.at("leaks"), false);
+  EXPECT_TRUE(none.at("largest_gap_mm").is_null());
+  EXPECT_TRUE(cli::scoreReportJson(as::AttemptScore{}, as::Rubric{}, cli::ScoredFiles{})
+                  .at("leak")
+                  .is_null());
 }
 
 }  // namespace

@@ -92,6 +92,48 @@ TEST(Attempt, TheShippedStitchScoresTheSamePinnedValueEveryRun) {
   EXPECT_NEAR(scores[0], kStitchScore, 1e-9);
 }
 
+// The replay ends with the leak test on the final scene: the shipped stitch is one stitch with no
+// knot, so its line leaks, widest opposite the stitch (tests/sim/scene/leak_test_test.cpp); the
+// score does not count it (metrics.h: lapse_index).
+TEST(Attempt, TheReplayCarriesTheLeakTestOfTheFinalScene) {
+  auto replayed = replayAttempt(kScene, kStitch);
+  ASSERT_TRUE(std::holds_alternative<Attempt>(replayed));
+  const Attempt& a = std::get<Attempt>(replayed);
+  ASSERT_TRUE(a.leak.has_value());
+  EXPECT_EQ(a.leak->status, sim::LeakTestStatus::Solved);
+  EXPECT_TRUE(a.leak->leaks);
+  EXPECT_GT(a.leak->largestGapMm, 0.5);
+  EXPECT_GT(std::abs(std::remainder(a.leak->angleDeg, 360.0)), 135.0);
+  EXPECT_DOUBLE_EQ(a.leak->limitMm, 0.05);
+  EXPECT_DOUBLE_EQ(a.leak->pressureMmHg, 100.0);
+
+  auto rubric = loadRubric(kRubric);
+  ASSERT_TRUE(std::holds_alternative<Rubric>(rubric));
+  const AttemptScore s = scoreAttempt(a, std::get<Rubric>(rubric));
+  ASSERT_TRUE(s.leak.has_value());
+  EXPECT_EQ(s.leak->largestGapMm, a.leak->largestGapMm);
+  EXPECT_NEAR(s.score, kStitchScore, 1e-9);
+
+  // an attempt captured from a scene has none
+  EXPECT_FALSE(captureAttempt(sim::Scene(anastomosis()), {}).leak.has_value());
+}
+
+// A test without a verdict passes on its status and no numbers.
+TEST(Attempt, ALeakTestWithoutAVerdictIsAFindingWithoutNumbers) {
+  sim::LeakResult r;
+  r.status = sim::LeakTestStatus::NoStitches;
+  r.pressureMmHg = 100.0;
+  r.leak = true;
+  r.largestGapMm = 0.3;
+  const LeakFinding f = leakFinding(r);
+  EXPECT_EQ(f.status, sim::LeakTestStatus::NoStitches);
+  EXPECT_FALSE(f.leaks);
+  EXPECT_TRUE(std::isnan(f.largestGapMm));
+  EXPECT_TRUE(std::isnan(f.angleDeg));
+  EXPECT_TRUE(std::isnan(f.limitMm));
+  EXPECT_DOUBLE_EQ(f.pressureMmHg, 100.0);
+}
+
 TEST(Attempt, ATruncatedRecordingScoresWhatItHoldsAndSaysSo) {
   sim::Recording whole;
   ASSERT_TRUE(sim::readRecording(kStitch, whole).ok());

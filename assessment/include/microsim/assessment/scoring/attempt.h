@@ -16,10 +16,11 @@
 // Units: millimetres, seconds, degrees.
 
 #include "microsim/sim/scene/input_frame.h"
+#include "microsim/sim/scene/leak_test.h"
+#include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/scene_def.h"
 #include "microsim/sim/scene/scene_events.h"
-#include "microsim/sim/scene/recording.h"
 
 #include <array>
 #include <cstdint>
@@ -53,6 +54,20 @@ struct VesselGeometry {
   sim::Vec3 angleZero = sim::Vec3::UnitZ(); ///< unit, ⟂ angleAxis: 0° (toward the microscope)
 };
 
+/// The lumen's pressure test on the final scene (sim/scene/leak_test.h), as scoring sees it.
+struct LeakFinding {
+  /// Solved: the numbers below hold; anything else: no verdict (leaks false, the numbers NaN)
+  sim::LeakTestStatus status = sim::LeakTestStatus::Solved;
+  bool leaks = false;  ///< fluid escapes through the suture line
+  double largestGapMm = std::numeric_limits<double>::quiet_NaN();  ///< mm, widest gap
+  double angleDeg = std::numeric_limits<double>::quiet_NaN();      ///< where it is, [0, 360)
+  double limitMm = std::numeric_limits<double>::quiet_NaN();       ///< mm: wider leaks
+  double pressureMmHg = std::numeric_limits<double>::quiet_NaN();  ///< as tested
+};
+
+/// The finding of a leak test's result (a verdict only when it was solved).
+LeakFinding leakFinding(const sim::LeakResult& result);
+
 struct Attempt {
   std::vector<sim::SceneEvent> events;
   std::vector<sim::PierceEvent> pierces;
@@ -66,6 +81,9 @@ struct Attempt {
   double needleRadius = std::numeric_limits<double>::quiet_NaN();
   bool truncated = false;                   ///< the recording had no end record: partial
   std::string sceneFile;                    ///< as loaded, empty when built in memory
+  /// the leak test on the final scene (sim::leakTest at its default 100 mmHg), which
+  /// replayAttempt runs; none for an attempt captured or built otherwise
+  std::optional<LeakFinding> leak;
 };
 
 /// The geometry of the scene's vessels (the camera gives the circumferential 0°).
@@ -109,8 +127,9 @@ struct ReplayError {
   sim::RecordingStatus recording;
 };
 
-/// Steps a Deterministic scene through a recording's frames. A Truncated recording replays
-/// its complete frames and the Attempt says truncated; any other recording error fails.
+/// Steps a Deterministic scene through a recording's frames, then runs the leak test on the
+/// final scene (Attempt::leak). A Truncated recording replays its complete frames and the
+/// Attempt says truncated; any other recording error fails.
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const std::string& recordingPath);
 /// The same on a recording already in memory.

@@ -9,7 +9,8 @@
 //   suture-line disruption  a SutureBreak event (the thread is gone: not located); a
 //                           SuturePulledOut event (located at the pierce the thread slid out
 //                           of); a leak, once the lumen's pressure test passes one in
-//                           (LeakFinding: located at its largest gap).
+//                           (LeakFinding, attempt.h: located at its largest gap, measured
+//                           in mm against its limit).
 //   back-wall stitch        a passage entering the back wall (pierce_metrics.h: catching it
 //                           closes the lumen).
 //   oblique stitch          the two passages of a stitch more than `obliqueDeg` apart around
@@ -89,13 +90,6 @@ struct EndProductLimits {
   /// where the line leaks first (too wide) or crowds the wall (too narrow); smaller
   /// differences are within what careful hands leave
   double unequalSpacingFraction = 0.5;
-};
-
-/// The lumen's pressure test, done by the engine on the final scene (not here).
-struct LeakFinding {
-  bool leaks = false;  ///< fluid escaped through the suture line
-  double largestGapMm = std::numeric_limits<double>::quiet_NaN();  ///< mm, widest gap
-  double angleDeg = std::numeric_limits<double>::quiet_NaN();      ///< where it is, [0, 360)
 };
 
 struct EndProductError {

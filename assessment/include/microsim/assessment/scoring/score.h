@@ -15,6 +15,7 @@
 #include "microsim/assessment/scoring/rubric.h"
 #include "microsim/assessment/scoring/stitch_metrics.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct AttemptScore {
   std::vector<PierceMetrics> pierces;
   std::vector<StitchMetrics> stitches;
   std::vector<EndProductError> endProduct;  ///< the finished anastomosis's errors (end_product.h)
+  std::optional<LeakFinding> leak;          ///< the attempt's leak test, when it had one
   bool truncated = false;                 ///< scored from a partial recording
 };
 

@@ -10,10 +10,16 @@
 // (0.5 mm for the shipped scenes). With no pierce point (or pierce points on the axis) d is
 // end 0's sector-0 direction.
 //
+// The lip at any angle (cutRingLip, for a walk around the whole suture line: scene/leak_test.h):
+// the point of a cut ring's hull at the direction d, between the two nodes whose rest radial
+// directions flank d, linear in the angle between them: at a node's own angle it is that node.
+//
 // Units: millimetres.
 
 #include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/mesh/vessel.h"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -36,5 +42,13 @@ struct EndGap {
 std::optional<EndGap> endGapAtStitch(const SpringModel& model, const Points& x,
                                      const std::vector<SceneVessel>& vessels,
                                      const std::vector<Vec3>& piercePoints);
+
+/// End 0 and end 1 of the severed vessel among `vessels` (the last of each), null where missing.
+std::array<const SceneVessel*, 2> severedEnds(const std::vector<SceneVessel>& vessels);
+
+/// The lip of vessel end `v` on `hull` toward unit direction d (normal to its axis) at tissue
+/// positions x (3 by #N, mm): the cut ring's point at d's angle (see above), mm.
+Vec3 cutRingLip(const SpringModel& model, const Points& x, const SceneVessel& v, const Vec3& d,
+                VesselHull hull);
 
 }  // namespace microsim::sim::collide

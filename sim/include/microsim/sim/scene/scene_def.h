@@ -51,6 +51,7 @@
 #include "microsim/sim/mesh/spring_model.h"
 #include "microsim/sim/mesh/vessel.h"
 #include "microsim/sim/scene/input_frame.h"
+#include "microsim/sim/scene/scene_events.h"
 #include "microsim/sim/scene/spring_scene.h"
 #include "microsim/sim/scene/stay_stitch.h"
 #include "microsim/sim/solve/solver.h"
@@ -65,6 +66,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -84,6 +86,11 @@ struct SceneVessel {
   TriangleRange clampedEnd;
   TriangleRange cutEnd;
 };
+
+/// The vessel (index into `vessels`) and the surface of it that tissue face `face` lies on;
+/// none for a face of another object.
+std::optional<std::pair<int, VesselSurface>> vesselSurfaceOf(
+    const std::vector<SceneVessel>& vessels, int face);
 
 /// Microscope defaults for the viewport (mm, degrees).
 struct CameraDef {
