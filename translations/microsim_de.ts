@@ -1833,6 +1833,10 @@
         <source>A knot slipped: the stitch would open. Alternate the throws and snug each one down.</source>
         <translation>Ein Knoten ist gerutscht: die Naht würde aufgehen. Wechseln Sie die Wurfrichtung und ziehen Sie jeden Wurf an.</translation>
     </message>
+    <message>
+        <source>The suture line leaks under pressure: close the widest gap with another stitch.</source>
+        <translation>Die Nahtreihe ist unter Druck undicht: schließen Sie die größte Lücke mit einer weiteren Naht.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2279,6 +2283,14 @@
     <message>
         <source>Cut-end length</source>
         <translation>Länge der Fadenenden</translation>
+    </message>
+    <message>
+        <source>Leaks under pressure</source>
+        <translation>Undicht unter Druck</translation>
+    </message>
+    <message>
+        <source>Largest gap under pressure</source>
+        <translation>Größte Lücke unter Druck</translation>
     </message>
 </context>
 <context>
@@ -3310,6 +3322,10 @@ RMS-Fehler %7 mm, größter %8 mm
     <message>
         <source>A knot slipped: the stitch would open.</source>
         <translation>Ein Knoten ist gerutscht: die Naht würde aufgehen.</translation>
+    </message>
+    <message>
+        <source>The suture line leaked under pressure.</source>
+        <translation>Die Nahtreihe war unter Druck undicht.</translation>
     </message>
 </context>
 <context>

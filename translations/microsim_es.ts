@@ -1833,6 +1833,10 @@
         <source>A knot slipped: the stitch would open. Alternate the throws and snug each one down.</source>
         <translation>Un nudo se deslizó: el punto se abriría. Alterne las vueltas y apriete cada una.</translation>
     </message>
+    <message>
+        <source>The suture line leaks under pressure: close the widest gap with another stitch.</source>
+        <translation>La línea de sutura tiene fuga bajo presión: cierre la mayor separación con otro punto.</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::LatencyDialog</name>
@@ -2279,6 +2283,14 @@
     <message>
         <source>Cut-end length</source>
         <translation>Longitud de los cabos</translation>
+    </message>
+    <message>
+        <source>Leaks under pressure</source>
+        <translation>Fuga bajo presión</translation>
+    </message>
+    <message>
+        <source>Largest gap under pressure</source>
+        <translation>Mayor separación bajo presión</translation>
     </message>
 </context>
 <context>
@@ -3310,6 +3322,10 @@ Error RMS %7 mm, máximo %8 mm
     <message>
         <source>A knot slipped: the stitch would open.</source>
         <translation>Un nudo se deslizó: el punto se abriría.</translation>
+    </message>
+    <message>
+        <source>The suture line leaked under pressure.</source>
+        <translation>La línea de sutura tuvo fuga bajo presión.</translation>
     </message>
 </context>
 <context>

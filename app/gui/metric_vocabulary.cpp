@@ -14,7 +14,7 @@ namespace {
 using KeyLabel = std::pair<std::string_view, const char*>;
 
 // metric key → label, in the scoring catalogue's order
-constexpr std::array<KeyLabel, 34> kMetricLabels{{
+constexpr std::array<KeyLabel, 36> kMetricLabels{{
     {"time", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Time")},
     {"path_length", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length")},
     {"path_length_left", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Path length, left hand")},
@@ -50,6 +50,8 @@ constexpr std::array<KeyLabel, 34> kMetricLabels{{
     {"knot_throws", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Throws per knot")},
     {"thread_cuts", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Tails cut")},
     {"cut_end_length", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Cut-end length")},
+    {"leaks", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Leaks under pressure")},
+    {"leak_gap", QT_TRANSLATE_NOOP("microsim::gui::MetricVocabulary", "Largest gap under pressure")},
 }};
 
 // pierce field key → label, in pierceFields() order

@@ -31,6 +31,7 @@ QString FeedbackText::advice(const std::string& key) {
       {"pierce.not_done", QT_TR_NOOP("The needle did not pass through the wall.")},
       {"pierce.extra_passages", QT_TR_NOOP("Pass each wall once: every extra passage injures it.")},
       {"pierce.off_arc", QT_TR_NOOP("Turn the needle along its curve instead of pushing it.")},
+      {"never.leak", QT_TR_NOOP("The suture line leaks under pressure: close the widest gap with another stitch.")},
       {"never.knot_slipped", QT_TR_NOOP("A knot slipped: the stitch would open. Alternate the throws and snug each one down.")},
       {"never.needle_dragged", QT_TR_NOOP("The needle was dragged sideways through the tissue, not turned along its curve.")},
       {"stitch.not_completed", QT_TR_NOOP("The stitch was not completed through both ends.")},

@@ -35,6 +35,7 @@ QString ReviewText::feedback(const QString& key) {
       {QStringLiteral("cut_end.too_long"), QT_TR_NOOP("Tails were left too long.")},
       {QStringLiteral("cut_end.too_short"), QT_TR_NOOP("Tails were cut too short.")},
       {QStringLiteral("end_product.lapses"), QT_TR_NOOP("The finished anastomosis has lapses.")},
+      {QStringLiteral("never.leak"), QT_TR_NOOP("The suture line leaked under pressure.")},
       {QStringLiteral("never.knot_slipped"), QT_TR_NOOP("A knot slipped: the stitch would open.")},
       {QStringLiteral("never.back_wall_catch"), QT_TR_NOOP("The back wall was caught: the lumen would be closed.")},
       {QStringLiteral("never.suture_break"), QT_TR_NOOP("The suture broke.")},

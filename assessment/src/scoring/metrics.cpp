@@ -10,7 +10,7 @@ namespace microsim::assessment {
 
 namespace {
 
-constexpr std::array<MetricInfo, 34> kCatalogue{{
+constexpr std::array<MetricInfo, 36> kCatalogue{{
     {"time", "s"},
     {"path_length", "mm"},
     {"path_length_left", "mm"},
@@ -45,6 +45,8 @@ constexpr std::array<MetricInfo, 34> kCatalogue{{
     {"knot_throws", "count"},
     {"thread_cuts", "count"},
     {"cut_end_length", "mm"},
+    {"leaks", "count"},
+    {"leak_gap", "mm"},
 }};
 
 // mean of the finite values `get` picks; NaN when there are none
@@ -122,6 +124,7 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
   const std::optional<double> triangulation = triangulationErrorDeg(m.stitches);
   m.endProduct = endProductErrors(attempt);
   const KnotSummary knots = knotSummary(attempt.events);
+  const bool leakVerdict = attempt.leak && attempt.leak->status == sim::LeakTestStatus::Solved;
   const auto lapseCount = [&](EndProductErrorKind kind) {
     return static_cast<double>(countEndProductErrors(m.endProduct, kind));
   };
@@ -161,6 +164,8 @@ AttemptMetrics computeMetrics(const Attempt& attempt, const MotionParams& params
       knots.meanThrows,
       static_cast<double>(knots.cuts),
       knots.meanCutEndMm,
+      leakVerdict ? (attempt.leak->leaks ? 1.0 : 0.0) : kNaN,
+      leakVerdict ? attempt.leak->largestGapMm : kNaN,
   };
   m.values.reserve(kCatalogue.size());
   for (std::size_t i = 0; i < kCatalogue.size(); ++i)

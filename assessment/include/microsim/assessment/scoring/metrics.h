@@ -43,6 +43,12 @@
 //   knot_throws          count  mean throws of the knots pulled tight (NaN without one)
 //   thread_cuts          count  cuts that left a cut end on a stitch
 //   cut_end_length       mm     mean cut-end length of those cuts (NaN without one)
+//   leaks                count  1 when the leak test on the final scene finds the suture line
+//                               open, 0 when it holds; NaN without a verdict (no test run: an
+//                               attempt not replayed; or not solved). Not in lapse_index: a
+//                               line of fewer stitches than a closed ring always leaks, which
+//                               lessons 3 and 4 ask for
+//   leak_gap             mm     the leak test's largest gap along the suture line
 
 #include "microsim/assessment/scoring/arc_metrics.h"
 #include "microsim/assessment/scoring/attempt.h"
