@@ -19,7 +19,7 @@ namespace {
 using K = sim::SceneEventKind;
 using sim::suture::KnotType;
 
-sim::SceneEvent tightened(KnotType type, int throws) {
+sim::SceneEvent knotTightened(KnotType type, int throws) {
   sim::SceneEvent e;
   e.kind = K::KnotTightened;
   e.count = throws;
@@ -28,14 +28,14 @@ sim::SceneEvent tightened(KnotType type, int throws) {
   return e;
 }
 
-sim::SceneEvent slipped() {
+sim::SceneEvent knotSlipped() {
   sim::SceneEvent e;
   e.kind = K::KnotSlipped;
   e.count = 1;
   return e;
 }
 
-sim::SceneEvent cut(double cutEndMm) {
+sim::SceneEvent threadCut(double cutEndMm) {
   sim::SceneEvent e;
   e.kind = K::ThreadCut;
   e.hand = 1;
@@ -66,9 +66,9 @@ TEST(KnotMetrics, ASlipTakesTheSecurityOfTheKnotItFollows) {
   // a surgeon's knot that holds, a granny that slips, a square knot that slips, a square
   // knot of one throw (it cannot lock), a surgeon's knot tightened last that holds
   const KnotSummary s =
-      knotSummary({tightened(KnotType::Surgeons, 2), tightened(KnotType::Granny, 2), slipped(),
-                   tightened(KnotType::Square, 2), slipped(), tightened(KnotType::Square, 1),
-                   tightened(KnotType::Surgeons, 3)});
+      knotSummary({knotTightened(KnotType::Surgeons, 2), knotTightened(KnotType::Granny, 2), knotSlipped(),
+                   knotTightened(KnotType::Square, 2), knotSlipped(), knotTightened(KnotType::Square, 1),
+                   knotTightened(KnotType::Surgeons, 3)});
   EXPECT_EQ(s.tightened, 5);
   EXPECT_EQ(s.secure, 2);
   EXPECT_EQ(s.slipped, 2);
@@ -76,20 +76,20 @@ TEST(KnotMetrics, ASlipTakesTheSecurityOfTheKnotItFollows) {
 }
 
 TEST(KnotMetrics, OnlyCutsThatLeaveATailOnAStitchAreCutEnds) {
-  const KnotSummary s = knotSummary({cut(0.8), cut(-1.0), cut(1.6)});
+  const KnotSummary s = knotSummary({threadCut(0.8), threadCut(-1.0), threadCut(1.6)});
   EXPECT_EQ(s.cuts, 2);
   EXPECT_DOUBLE_EQ(s.meanCutEndMm, 1.2);
   EXPECT_DOUBLE_EQ(s.longestCutEndMm, 1.6);
 }
 
-Rubric shippedRubric(const std::string& lesson) {
+Rubric knotLessonRubric(const std::string& lesson) {
   const auto loaded =
       loadRubric(std::string(MICROSIM_SOURCE_DIR) + "/resources/rubrics/" + lesson + ".json");
   EXPECT_TRUE(std::holds_alternative<Rubric>(loaded));
   return std::holds_alternative<Rubric>(loaded) ? std::get<Rubric>(loaded) : Rubric{};
 }
 
-bool hasFeedback(const AttemptScore& score, const std::string& key) {
+bool knotFeedbackGiven(const AttemptScore& score, const std::string& key) {
   for (const MetricScore& m : score.metrics)
     if (m.feedback == key) return true;
   for (const std::string& f : score.neverEvents)
@@ -99,9 +99,9 @@ bool hasFeedback(const AttemptScore& score, const std::string& key) {
 
 TEST(KnotMetrics, LessonThreeWeighsTheKnotAndTheTails) {
   Attempt tied;
-  tied.events = {tightened(KnotType::Surgeons, 2), cut(1.1), cut(0.9)};
+  tied.events = {knotTightened(KnotType::Surgeons, 2), threadCut(1.1), threadCut(0.9)};
   Attempt granny = tied;
-  granny.events = {tightened(KnotType::Granny, 2), slipped(), cut(1.1), cut(0.9)};
+  granny.events = {knotTightened(KnotType::Granny, 2), knotSlipped(), threadCut(1.1), threadCut(0.9)};
   Attempt untied;
 
   const AttemptMetrics m = computeMetrics(tied);
@@ -112,20 +112,20 @@ TEST(KnotMetrics, LessonThreeWeighsTheKnotAndTheTails) {
   EXPECT_EQ(m.value("thread_cuts"), 2.0);
   EXPECT_DOUBLE_EQ(*m.value("cut_end_length"), 1.0);
 
-  const Rubric rubric = shippedRubric("03_single_stitch");
+  const Rubric rubric = knotLessonRubric("03_single_stitch");
   const AttemptScore good = scoreAttempt(tied, rubric);
   const AttemptScore slip = scoreAttempt(granny, rubric);
   const AttemptScore none = scoreAttempt(untied, rubric);
   for (const char* key : {"knot.not_tied", "knot.not_secure", "cut.not_done", "cut_end.too_long",
                           "cut_end.too_short"})
-    EXPECT_FALSE(hasFeedback(good, key)) << key;
+    EXPECT_FALSE(knotFeedbackGiven(good, key)) << key;
   // the granny slipped: a never-event caps the attempt, and it is not a secure knot
-  EXPECT_TRUE(hasFeedback(slip, "never.knot_slipped"));
-  EXPECT_TRUE(hasFeedback(slip, "knot.not_secure"));
+  EXPECT_TRUE(knotFeedbackGiven(slip, "never.knot_slipped"));
+  EXPECT_TRUE(knotFeedbackGiven(slip, "knot.not_secure"));
   EXPECT_LE(slip.score, 50.0);
-  EXPECT_TRUE(hasFeedback(none, "knot.not_tied"));
-  EXPECT_TRUE(hasFeedback(none, "cut.not_done"));
-  EXPECT_FALSE(hasFeedback(none, "never.knot_slipped"));
+  EXPECT_TRUE(knotFeedbackGiven(none, "knot.not_tied"));
+  EXPECT_TRUE(knotFeedbackGiven(none, "cut.not_done"));
+  EXPECT_FALSE(knotFeedbackGiven(none, "never.knot_slipped"));
   EXPECT_GT(good.score, none.score);
 }
 

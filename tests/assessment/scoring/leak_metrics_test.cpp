@@ -15,7 +15,7 @@
 namespace microsim::assessment {
 namespace {
 
-LeakFinding finding(bool leaks, double gapMm, sim::LeakTestStatus status = sim::LeakTestStatus::Solved) {
+LeakFinding leakFindingOf(bool leaks, double gapMm, sim::LeakTestStatus status = sim::LeakTestStatus::Solved) {
   LeakFinding f;
   f.status = status;
   f.leaks = leaks;
@@ -28,11 +28,11 @@ LeakFinding finding(bool leaks, double gapMm, sim::LeakTestStatus status = sim::
 
 TEST(LeakMetrics, TheVerdictOfASolvedTestIsAMetricAndNoVerdictIsNaN) {
   Attempt held;
-  held.leak = finding(false, 0.03);
+  held.leak = leakFindingOf(false, 0.03);
   Attempt open;
-  open.leak = finding(true, 0.11);
+  open.leak = leakFindingOf(true, 0.11);
   Attempt unsolved;
-  unsolved.leak = finding(false, std::nan(""), sim::LeakTestStatus::NotConverged);
+  unsolved.leak = leakFindingOf(false, std::nan(""), sim::LeakTestStatus::NotConverged);
   Attempt untested;
 
   EXPECT_EQ(computeMetrics(held).value("leaks"), 0.0);
@@ -47,27 +47,27 @@ TEST(LeakMetrics, TheVerdictOfASolvedTestIsAMetricAndNoVerdictIsNaN) {
   EXPECT_EQ(computeMetrics(open).value("lapse_index"), 0.0);
 }
 
-Rubric shippedLessonRubric(const std::string& id) {
+Rubric leakLessonRubric(const std::string& id) {
   const auto loaded = loadRubric(std::string(MICROSIM_SOURCE_DIR) + "/resources/rubrics/" + id + ".json");
   EXPECT_TRUE(std::holds_alternative<Rubric>(loaded)) << id;
   return std::holds_alternative<Rubric>(loaded) ? std::get<Rubric>(loaded) : Rubric{};
 }
 
-bool fired(const AttemptScore& s, const std::string& key) {
+bool neverEventFired(const AttemptScore& s, const std::string& key) {
   return std::find(s.neverEvents.begin(), s.neverEvents.end(), key) != s.neverEvents.end();
 }
 
 TEST(LeakMetrics, OnlyTheFullAnastomosisIsCappedForALeak) {
   Attempt open;
-  open.leak = finding(true, 0.11);
+  open.leak = leakFindingOf(true, 0.11);
   Attempt held;
-  held.leak = finding(false, 0.03);
-  const AttemptScore full = scoreAttempt(open, shippedLessonRubric("05_full_anastomosis"));
-  EXPECT_TRUE(fired(full, "never.leak"));
+  held.leak = leakFindingOf(false, 0.03);
+  const AttemptScore full = scoreAttempt(open, leakLessonRubric("05_full_anastomosis"));
+  EXPECT_TRUE(neverEventFired(full, "never.leak"));
   EXPECT_LE(full.score, 60.0);
-  EXPECT_FALSE(fired(scoreAttempt(held, shippedLessonRubric("05_full_anastomosis")), "never.leak"));
+  EXPECT_FALSE(neverEventFired(scoreAttempt(held, leakLessonRubric("05_full_anastomosis")), "never.leak"));
   for (const char* partial : {"03_single_stitch", "04_triangulation"})
-    EXPECT_FALSE(fired(scoreAttempt(open, shippedLessonRubric(partial)), "never.leak")) << partial;
+    EXPECT_FALSE(neverEventFired(scoreAttempt(open, leakLessonRubric(partial)), "never.leak")) << partial;
 }
 
 }  // namespace

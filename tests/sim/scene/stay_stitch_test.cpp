@@ -27,7 +27,7 @@ SceneDef stayStitchScene() {
   return std::holds_alternative<SceneDef>(load) ? std::get<SceneDef>(std::move(load)) : SceneDef{};
 }
 
-bool inRange(int face, const TriangleRange& r) {
+bool onSurface(int face, const TriangleRange& r) {
   return face >= r.begin && face < r.end;
 }
 
@@ -46,7 +46,7 @@ TEST(StayStitch, TheThreadStartsThroughBothWallsInPathOrder) {
   const TriangleRange surfaces[4] = {def.vessels[0].outerSurface, def.vessels[0].innerSurface,
                                      def.vessels[1].innerSurface, def.vessels[1].outerSurface};
   for (std::size_t k = 0; k < 4; ++k) {
-    EXPECT_TRUE(inRange(pierces[k].face, surfaces[k])) << k;
+    EXPECT_TRUE(onSurface(pierces[k].face, surfaces[k])) << k;
     EXPECT_LT((scene.sutureState()->x.col(pierces[k].node) - pierces[k].point).norm(), 1e-12) << k;
     if (k > 0) {
       EXPECT_LT(pierces[k].node, pierces[k - 1].node) << k;
