@@ -2,6 +2,7 @@
 """clang-tidy over every first-party translation unit of a compile database.
 
     tidy.py --src DIR --build DIR --cache DIR [--verified FILE] [--record] [--jobs N]
+            [--known-only]
 
 A unit is identified by a key: a hash of the clang-tidy version, every .clang-tidy, the
 analyzer flags, the unit's path and compile command (source and build dirs made relative),
@@ -19,6 +20,11 @@ command lists every file the unit read, and when none changed the preprocessor i
 
 --record rewrites the --verified file with every unit's key, and only when the run found
 nothing. Exit status: 0 clean, 1 diagnostics (printed once per location), 2 bad usage.
+
+--known-only analyses nothing. With --record it writes the units already known clean (cached
+or recorded) and says how many are not: for a whole-tree analysis cut short (the end of a
+session on a slow machine), so that what it verified is not lost to a machine with an empty
+cache. It checks nothing and always exits 0; the stage itself never passes it.
 """
 import argparse
 import concurrent.futures
@@ -285,6 +291,9 @@ def main():
     parser.add_argument("--record", action="store_true",
                         help="rewrite --verified with every unit's key when nothing is found")
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--known-only", action="store_true",
+                        help="analyse nothing: with --record, write the units already known clean "
+                             "(in the cache or the record) and name how many are not; not a check")
     o = parser.parse_args()
     if o.record and not o.verified:
         parser.error("--record needs --verified FILE")
@@ -307,12 +316,14 @@ def main():
             return path, key, "cache", []
         if key and key in verified:
             return path, key, "record", []
+        if o.known_only:
+            return path, key, "unknown", []
         found = analyse(tree, database, path)
         if not found and key:
             open(os.path.join(o.cache, "clean", key), "w").close()
         return path, key, "analysed", found
 
-    how, seen, checks, keyed = Counter(), set(), Counter(), {}
+    how, seen, checks, keyed, unknown = Counter(), set(), Counter(), {}, set()
     with concurrent.futures.ThreadPoolExecutor(o.jobs) as pool:
         for path, key, source, found in pool.map(check, sorted(units)):
             how[source] += 1
@@ -320,12 +331,24 @@ def main():
                 keyed[path] = key
             if source == "analysed":
                 print(f"tidy: analysed {os.path.relpath(path, tree.src)}", flush=True)
+            if source == "unknown":
+                unknown.add(path)
             for head, name, text in found:
                 # a header's diagnostic comes once per unit that includes it: show it once
                 if head not in seen:
                     seen.add(head)
                     checks[name] += 1
                     print("\n".join(text), flush=True)
+
+    if o.known_only:
+        # bookkeeping after an analysis cut short (a session's end): the record keeps every
+        # unit found clean so far, so a machine with nothing cached analyses only the rest
+        clean = {p: k for p, k in keyed.items() if p not in unknown}
+        print(f"tidy: {len(clean)} of {len(units)} units known clean, {len(units) - len(clean)} not yet analysed")
+        if o.record:
+            write_verified(o.verified, tree, clean)
+            print(f"tidy: recorded {len(clean)} clean units in {o.verified}")
+        return 0
 
     cpu = os.times()
     print(f"tidy: {len(units)} files: {how['analysed']} analysed, {how['record']} verified "

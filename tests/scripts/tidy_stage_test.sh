@@ -80,4 +80,16 @@ grep -q '^tidy: analysed sim/gadget.cpp$' "$work/out" || fail "the new unit was 
 if grep -q '^tidy: analysed sim/widget.cpp$' "$work/out"; then
   fail "the recorded unit was analysed again"
 fi
-echo "tidy stage: record honoured, header change analysed, new unit analysed, --record refused on a finding"
+# 5. --known-only analyses nothing and records only what is known clean: a third unit never
+#    analysed stays out of the record; the two known clean (cached by cold4) stay in
+cat >"$tree/sim/gizmo.cpp" <<'EOF'
+int thrice(int x) { return 3 * x; }
+EOF
+database widget.cpp gadget.cpp gizmo.cpp
+tidy cold4 --record --known-only
+[ "$status" -eq 0 ] || fail "--known-only failed (exit $status)"
+if grep -q '^tidy: analysed' "$work/out"; then fail "--known-only analysed a unit"; fi
+grep -q '^tidy: 2 of 3 units known clean, 1 not yet analysed' "$work/out" || fail "--known-only miscounted"
+grep -q ' sim/gadget.cpp$' "$tree/verified.txt" || fail "the partial record lost sim/gadget.cpp"
+if grep -q ' sim/gizmo.cpp$' "$tree/verified.txt"; then fail "the partial record holds a unit never analysed"; fi
+echo "tidy stage: record honoured, header change analysed, new unit analysed, --record refused on a finding, --known-only records only what is known clean"
