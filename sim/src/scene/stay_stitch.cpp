@@ -99,7 +99,6 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   // end first toward the circumference (about 1.6 mm, off the vessel), then along it away from
   // the gap, so the needle lies inside the field of view rather than 4–5 mm down the vessel
   const Vec3 tailWay = (-a0 + 0.6 * around).normalized();
-  const Vec3 longOut = around;
   const Vec3 longWay = -a1;
   const int outLinks = std::min(hole3 - 1 - n, static_cast<int>(std::lround(1.6 / link)));
   x.col(hole0) = out0;
@@ -108,10 +107,10 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   for (int j = 0; j <= lumenLinks; ++j)
     x.col(hole1 - j) = in0 + (static_cast<double>(j) / lumenLinks) * (in1 - in0);
   x.col(hole3) = out1;
-  const Vec3 corner = out1 + link * radial + outLinks * link * longOut;
+  const Vec3 corner = out1 + link * radial + outLinks * link * around;
   for (int i = hole3 - 1; i >= n; --i) {
     const int along = hole3 - 1 - i;
-    x.col(i) = along <= outLinks ? Vec3(out1 + link * radial + along * link * longOut)
+    x.col(i) = along <= outLinks ? Vec3(out1 + link * radial + along * link * around)
                                  : Vec3(corner + (along - outLinks) * link * longWay);
   }
 
