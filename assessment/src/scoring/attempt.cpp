@@ -1,23 +1,13 @@
 #include "microsim/assessment/scoring/attempt.h"
 
+#include "microsim/sim/scene/circumference_frame.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
 
 namespace microsim::assessment {
-
-namespace {
-
-// a unit vector ⟂ `axis`, preferring the direction of `toward`
-sim::Vec3 perpendicularToward(const sim::Vec3& axis, const sim::Vec3& toward) {
-  sim::Vec3 p = toward - toward.dot(axis) * axis;
-  if (p.norm() > 1e-9) return p.normalized();
-  const sim::Vec3 any = std::abs(axis.x()) < 0.9 ? sim::Vec3::UnitX() : sim::Vec3::UnitY();
-  return (any - any.dot(axis) * axis).normalized();
-}
-
-}  // namespace
 
 LeakFinding leakFinding(const sim::LeakResult& result) {
   LeakFinding f;
@@ -52,7 +42,7 @@ std::vector<VesselGeometry> vesselGeometry(const sim::SceneDef& def) {
     g.angleAxis = g.axis;
     for (const VesselGeometry& other : out)
       if (g.end == 1 && other.object == g.object && other.end == 0) g.angleAxis = other.axis;
-    g.angleZero = perpendicularToward(g.angleAxis, def.camera.eye - g.cutCentre);
+    g.angleZero = sim::circumferenceZero(g.angleAxis, def.camera.eye - g.cutCentre);
   }
   return out;
 }
@@ -129,8 +119,7 @@ Attempt AttemptRecorder::attempt(const sim::Scene& scene) const {
 }
 
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
-                                                 const sim::Recording& recording,
-                                                 bool truncated) {
+                                                 const sim::Recording& recording, bool truncated) {
   sim::SceneDefLoad loaded = sim::loadSceneDef(scenePath);
   if (auto* e = std::get_if<sim::SceneError>(&loaded)) {
     ReplayError err;
@@ -141,8 +130,8 @@ std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
   return replayAttempt(std::get<sim::SceneDef>(loaded), recording, truncated);
 }
 
-std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def, const sim::Recording& recording,
-                                                 bool truncated) {
+std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def,
+                                                 const sim::Recording& recording, bool truncated) {
   sim::Scene scene(def, sim::StepMode::Deterministic);
   AttemptRecorder recorder;
   for (const sim::InputFrame& f : recording.frames) {

@@ -1,6 +1,7 @@
 #include "microsim/sim/scene/leak_test.h"
 
 #include "microsim/sim/collide/end_gap.h"
+#include "microsim/sim/scene/circumference_frame.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/solve/spring_kernels.h"
 #include "solve/block_ldlt.h"
@@ -44,9 +45,8 @@ LeakFrame leakFrame(const SceneDef& def, const SceneVessel& end0, const LeakTest
   LeakFrame f;
   f.axis = end0.def.direction.normalized();
   const Vec3 cutCentre = end0.def.origin + end0.def.length * f.axis;
-  Vec3 toward = params.angleZero ? *params.angleZero : Vec3(def.camera.eye - cutCentre);
-  toward -= toward.dot(f.axis) * f.axis;
-  f.zero = toward.norm() > 1e-12 ? Vec3(toward.normalized()) : Vec3(f.axis.unitOrthogonal());
+  f.zero = circumferenceZero(
+      f.axis, params.angleZero ? *params.angleZero : Vec3(def.camera.eye - cutCentre));
   return f;
 }
 

@@ -1,6 +1,7 @@
 #include "microsim/sim/scene/stay_stitch.h"
 
 #include "microsim/sim/collide/point_triangle.h"
+#include "microsim/sim/scene/circumference_frame.h"
 #include "microsim/sim/scene/scene_def.h"
 
 #include <algorithm>
@@ -11,14 +12,6 @@
 namespace microsim::sim {
 
 namespace {
-
-// a unit vector ⟂ `axis`, preferring the direction of `toward` (attempt.h's 0°)
-Vec3 perpendicularTo(const Vec3& axis, const Vec3& toward) {
-  Vec3 p = toward - toward.dot(axis) * axis;
-  if (p.norm() > 1e-9) return p.normalized();
-  const Vec3 any = std::abs(axis.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  return (any - any.dot(axis) * axis).normalized();
-}
 
 // the hole on the surface `range` nearest `point`: its face, barycentric and point
 suture::Pierce holeOn(const SpringModel& tissue, const TriangleRange& range, const Vec3& point) {
@@ -65,7 +58,7 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const Vec3 a1 = v1.direction.normalized();
   const Vec3 cut0 = v0.origin + v0.length * a0;
   const Vec3 cut1 = v1.origin + v1.length * a1;
-  const Vec3 zero = perpendicularTo(a0, def.camera.eye - cut0);
+  const Vec3 zero = circumferenceZero(a0, def.camera.eye - cut0);
   const double angle = stitch.angleDeg * std::numbers::pi / 180.0;
   const Vec3 radial = std::cos(angle) * zero + std::sin(angle) * a0.cross(zero);
   const Vec3 around = a0.cross(radial);
