@@ -3,7 +3,8 @@
 // shipped scene with its needle's suture replaced by a thread (no needle) laid in the analytic
 // surgeon's knot of the recogniser's tests (bench/knot_geometry.h: a left double throw, then a
 // right single, scaled to a quarter, 300 equal links) 12 mm above the vessel. The forceps take
-// the two ends (their jaws along the thread's last links, closed from the third frame) and,
+// the two ends (upright, closing across the thread's third node from each end from the third
+// frame: jaws laid along the thread would lie on the knot, and jaws are solid to it) and,
 // from the sixth, pull them apart 0.01 mm a frame each along the line between them. Shared by
 // the engine's scene test and the CLI's report test.
 #include "bench/knot_geometry.h"
@@ -51,6 +52,25 @@ inline sim::HandInput forcepsOnThreadEnd(const sim::Points& x, int end, int inwa
   return h;
 }
 
+/// A forceps standing upright over node `node` (its tip there, the jaws rising from it and
+/// opening across the thread): the jaws, 3 mm long, stay clear of a small knot beside it.
+inline sim::HandInput forcepsAcrossThread(const sim::Points& x, int node, double closure) {
+  const sim::Vec3 along = (x.col(node + 1) - x.col(node - 1)).normalized();
+  const sim::Vec3 up = sim::Vec3::UnitZ();
+  const sim::Vec3 across = up.cross(along).normalized();
+  Eigen::Matrix3d frame;
+  frame.col(0) = up;  // tip → hinge
+  frame.col(1) = across;  // the jaws open this way
+  frame.col(2) = up.cross(across);
+  sim::HandInput h;
+  h.tracked = true;
+  h.instrument = sim::Instrument::Forceps;
+  h.position = x.col(node);
+  h.orientation = Eigen::Quaterniond(frame);
+  h.closure = closure;
+  return h;
+}
+
 /// Frame `k` (0-based) of the pull, for a thread whose nodes were `start` at the beginning.
 inline sim::InputFrame knotPullFrame(const sim::Points& start, int k) {
   const int last = static_cast<int>(start.cols()) - 1;
@@ -59,9 +79,9 @@ inline sim::InputFrame knotPullFrame(const sim::Points& start, int k) {
   const double closure = k < 2 ? 0.0 : 1.0;
   sim::InputFrame f;
   f.time = 0.01 * (k + 1);
-  f.hand(sim::Hand::Left) = forcepsOnThreadEnd(start, 0, 1, closure);
+  f.hand(sim::Hand::Left) = forcepsAcrossThread(start, 2, closure);
   f.hand(sim::Hand::Left).position -= pull * apart;
-  f.hand(sim::Hand::Right) = forcepsOnThreadEnd(start, last, -1, closure);
+  f.hand(sim::Hand::Right) = forcepsAcrossThread(start, last - 2, closure);
   f.hand(sim::Hand::Right).position += pull * apart;
   return f;
 }

@@ -1,5 +1,7 @@
 #include "microsim/sim/scene/scene.h"
 
+#include "thread_jaw_obstacles.h"
+
 #include "microsim/sim/solve/state_hash.h"
 #include "microsim/sim/suture/suture_coupling.h"
 #include "microsim/sim/tools/jaw_contact.h"
@@ -30,17 +32,6 @@ Eigen::Isometry3d poseOf(const HandInput& h) {
 }
 
 bool holdsJaws(Instrument i) { return i == Instrument::Forceps || i == Instrument::NeedleHolder; }
-
-// The jaws of a closed forceps as the thread meets them (suture_contact.h). Each jaw's tapered
-// capsule (jaw_contact.h) becomes two: the tip half as thick as its middle and the heel half
-// as thick as the heel, so the thread keeps off every point of the jaw.
-void appendClosedJaws(const tools::Forceps& forceps, std::vector<suture::Capsule>& out) {
-  for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
-    const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
-    out.push_back({jaw.tip, middle, 0.5 * (jaw.tipRadius + jaw.heelRadius)});
-    out.push_back({middle, jaw.heel, jaw.heelRadius});
-  }
-}
 
 }  // namespace
 
@@ -274,14 +265,13 @@ void Scene::stepSuture() {
     surface_->update(state_.x);
     world.surface = surface_.get();
   }
-  // closed jaws that hold no thread are a rod the thread lies against and is wound round (the
-  // instrument tie) instead of passing through. Jaws still closing are left out: a thread
-  // between them is what they grasp as they close, and their capsules would squeeze it out
-  // first; a forceps that grips the thread holds it between its jaws.
+  // the jaws are solid to the thread, open or closed, unless they hold it, and leave clear what
+  // lies between them (thread_jaw_obstacles.h): it is wound round them in the instrument tie
   for (std::size_t h = 0; h < forceps_.size(); ++h) {
     const auto& f = forceps_[h];
-    if (f && jawsPlaced_[h] && f->closed() && !f->holdsSuture())
-      appendClosedJaws(*f, world.capsules);
+    if (f && jawsPlaced_[h])
+      appendThreadJawObstacles(*f, sutureState_.x, suture_->def().needleLinks > 0 ? suture_->swage() : -1,
+                               suture_->def().contactRadius, world.capsules);
   }
   suture::SutureStepParams params = def_.needle->step;
   params.dt = dt();

@@ -9,12 +9,15 @@
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/tools/jaw_contact.h"
 
+#include "bench/knot_geometry.h"
 #include "support/knot_scene.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <variant>
@@ -26,21 +29,26 @@ const std::string kJawSceneRoot = MICROSIM_SOURCE_DIR;
 constexpr int kJawThreadLinks = 100;
 constexpr double kJawThreadLength = 5.0;  // mm
 
-/// The shipped scene with its needle's suture replaced by a straight thread 12 mm above the
-/// vessel, along x and centred on the z axis (no needle).
-std::optional<SceneDef> straightThreadScene() {
+/// The shipped scene with its needle's suture replaced by a thread (no needle) laid at x, its
+/// links of equal length.
+std::optional<SceneDef> sceneWithThread(const Points& x) {
   SceneDefLoad load = loadSceneDef(kJawSceneRoot + "/resources/scenes/anastomosis.json");
   if (!std::holds_alternative<SceneDef>(load)) return std::nullopt;
   SceneDef def = std::get<SceneDef>(std::move(load));
+  NeedleDef& needle = *def.needle;
+  needle.suture.needleLinks = 0;
+  needle.suture.links = static_cast<int>(x.cols()) - 1;
+  needle.suture.length = suture::knot_test::polylineLength(x);
+  needle.initialShape = x;
+  return def;
+}
+
+/// A straight thread 12 mm above the vessel, along x and centred on the z axis.
+std::optional<SceneDef> straightThreadScene() {
   Points x(3, kJawThreadLinks + 1);
   for (int i = 0; i <= kJawThreadLinks; ++i)
     x.col(i) = Vec3(-0.5 * kJawThreadLength + kJawThreadLength * i / kJawThreadLinks, 0.0, 12.0);
-  NeedleDef& needle = *def.needle;
-  needle.suture.needleLinks = 0;
-  needle.suture.links = kJawThreadLinks;
-  needle.suture.length = kJawThreadLength;
-  needle.initialShape = x;
-  return def;
+  return sceneWithThread(x);
 }
 
 /// Closed forceps standing upright (jaws rising from the tip) with the tip 0.3 mm below the
@@ -115,6 +123,75 @@ TEST(ThreadJawContact, ClosedJawsThatNeverReachTheThreadLeaveIt) {
   const Sweep sweep = sweepAcross(2.3);
   EXPECT_GT(sweep.clearance, 1.0);
   EXPECT_NEAR(sweep.middleY, 0.0, 0.05);
+}
+
+// Turns wound on a forceps stay on its jaws while it opens to take the tail (issue 19, the
+// instrument tie). The right forceps lies level, its jaws along +y and opening up and down,
+// with the thread hung over them: two and a half turns round both jaws, the ends hanging
+// 1.5 mm on either side. Opened to 0.3 (the jaws 14° apart), its jaws part the turns and
+// keep them: no link passes inside a jaw, and the thread still goes over them three times.
+// (Dropping the capsules whenever thread lay between the jaws let links sink 0.1 mm in.)
+constexpr double kTurnsRadius = 0.23;  // mm: on the closed jaws (capsule radius 0.19 + thread)
+
+Points threadWoundOnLevelJaws() {
+  namespace kt = suture::knot_test;
+  const double turns = 2.5;
+  const double pitch = 0.06;  // mm along the jaws per turn
+  kt::ThreadBuilder b;
+  b.start(Vec3(-kTurnsRadius, -0.1, 10.5));
+  b.lineTo(Vec3(-kTurnsRadius, -0.1, 12.0));
+  // round the jaws' axis (the y axis at z = 12), from the left side over the top
+  b.curve([&](double phi) {
+    return Vec3(-kTurnsRadius * std::cos(phi), -0.1 + pitch * phi / (2.0 * std::numbers::pi),
+                12.0 + kTurnsRadius * std::sin(phi));
+  }, 0.0, 2.0 * std::numbers::pi * turns);
+  b.lineTo(Vec3(kTurnsRadius, b.last().y(), 10.5));
+  const Points x = b.points();
+  return kt::evenlySpaced(x, 1.0, static_cast<int>(std::ceil(kt::polylineLength(x) / 0.05)));
+}
+
+/// Signed crossings of the thread over the jaws' plane x = 0 above their axis (z > 12): one a
+/// turn round the jaws.
+int turnsOverLevelJaws(const Points& x) {
+  int turns = 0;
+  for (int i = 0; i + 1 < x.cols(); ++i) {
+    const double a = x(0, i);
+    const double b = x(0, i + 1);
+    if ((a < 0.0) == (b < 0.0)) continue;
+    const double z = x(2, i) + (x(2, i + 1) - x(2, i)) * a / (a - b);
+    if (z > 12.0) turns += a < 0.0 ? 1 : -1;
+  }
+  return turns;
+}
+
+TEST(ThreadJawContact, TurnsWoundOnTheJawsStayOnThemWhileTheyOpen) {
+  const std::optional<SceneDef> def = sceneWithThread(threadWoundOnLevelJaws());
+  ASSERT_TRUE(def);
+  Scene scene(*def);
+  // two and a half turns from the left side: over the top three times
+  ASSERT_EQ(turnsOverLevelJaws(scene.sutureState()->x), 3);
+  Eigen::Matrix3d frame;
+  frame.col(0) = Vec3::UnitY();  // tip → hinge
+  frame.col(1) = Vec3::UnitZ();  // the jaws open up and down
+  frame.col(2) = Vec3::UnitX();
+  double clearance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 60; ++k) {
+    InputFrame f;
+    f.time = 0.01 * (k + 1);
+    HandInput& h = f.hand(Hand::Right);
+    h.tracked = true;
+    h.instrument = Instrument::Forceps;
+    h.position = Vec3(0.0, -1.5, 12.0);
+    h.orientation = Eigen::Quaterniond(frame);
+    // closed on nothing, then opened to 0.3 over 20 frames, and held
+    h.closure = k < 10 ? 1.0 : std::max(0.3, 1.0 - 0.035 * (k - 9));
+    scene.step(f);
+    clearance = std::min(clearance, clearanceToJaws(scene));
+  }
+  EXPECT_NEAR(scene.forceps(Hand::Right)->closure(), 0.3, 1e-12);
+  EXPECT_GT(clearance, -0.01);
+  EXPECT_EQ(turnsOverLevelJaws(scene.sutureState()->x), 3);
+  EXPECT_TRUE(scene.sutureState()->x.allFinite());
 }
 
 }  // namespace
