@@ -194,6 +194,34 @@ TEST(EndStateCheck, ThreadInTheLumenIsFoundAtItsDeepestNodeBeyondTheMargin) {
   EXPECT_TRUE(crossing.findings.empty());
 }
 
+TEST(EndStateCheck, ThreadAcrossOneEndsLumenIsInTheLumen) {
+  const SceneDef def = endStateScene();
+  // a back-wall catch's course: from end 0's inner hole at 0° the thread crosses its lumen to
+  // another inner hole of end 0, at 90°, on a straight chord whose middle lies at 45°, 0.117 mm
+  // inside the inner surface (0.4 − 0.4·cos 45°); its nodes split it in five, the deepest two
+  // at 2/5 and 3/5 of it (34° and 56°, about 0.11 mm in)
+  suture::SutureState thread = endStateStitch(def, 0.0);
+  const suture::SutureState across = endStateStitch(def, 90.0);
+  const int from = thread.pierces[1].node, to = thread.pierces[2].node;
+  suture::Pierce caught = across.pierces[1];
+  caught.node = to;
+  thread.pierces[2] = caught;
+  for (int k = to; k <= from; ++k) {
+    const double t = static_cast<double>(from - k) / (from - to);
+    thread.x.col(k) = (1.0 - t) * thread.pierces[1].point + t * caught.point;
+  }
+  const EndStateResult r = checkEndState(def, def.tissue.model.restPositions(), &thread);
+  ASSERT_EQ(endStateCount(r, EndStateKind::ThreadInLumen), 1);
+  for (const EndStateFinding& f : r.findings) {
+    if (f.kind != EndStateKind::ThreadInLumen) continue;
+    ::testing::Test::RecordProperty("chord_depth_mm", std::to_string(f.measured));
+    ::testing::Test::RecordProperty("chord_angle_deg", std::to_string(f.angleDeg));
+    EXPECT_LT(endStateApart(f.angleDeg, 45.0), 12.0) << f.angleDeg;
+    EXPECT_GT(f.measured, 0.1);
+    EXPECT_LT(f.measured, 0.4 - 0.4 * std::cos(std::numbers::pi / 4));
+  }
+}
+
 TEST(EndStateCheck, AnEdgeRiddenOverTheOtherIsALargeOverlapWhereItRides) {
   const SceneDef def = endStateScene();
   // end 1's edge around 200° drawn a wall's thickness toward the axis and 0.6 mm toward end 0:

@@ -30,7 +30,8 @@
 //                           the stitch's holes' mean angle.
 //   thread in the lumen     the final scene: thread (a loop, a cut end) inside an end's inner
 //                           surface deeper than half a wall (mm), other than a stitch's
-//                           crossing between its inner holes; located at its deepest node.
+//                           crossing between its inner holes and a passage's track through
+//                           the wall; located at its deepest node.
 //   large edge overlap      the final scene: the cut edges past each other with their
 //                           mid-walls radially offset by more than half a wall (mm); located
 //                           at the largest offset of each stretch of the line where they are.

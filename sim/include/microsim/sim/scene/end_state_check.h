@@ -21,11 +21,13 @@
 // itself (no bite) counts nothing.
 //   Limit: c > `overTightCompression` = 0.25. The wall is nearly incompressible (Carew,
 //   Vaishnav and Patel, "Compressibility of the arterial wall", Circ Res 23 (1968) 61–68), so
-//   a bite shortened by a quarter bulges by about an eighth in thickness and breadth: the
+//   a bite shortened by a quarter bulges by 15 % in thickness and breadth (1/√0.75): the
 //   puckered, blanched tissue inside the loop by which an examiner sees a stitch tied to
 //   strangle rather than to appose ("approximate, do not strangulate"). Apposition itself
-//   squeezes far less: the contact keeps the faces 10 µm apart and the thread's pull spreads
-//   over bites of 0.2–0.3 mm (the tied ring of the leak test: a few per cent).
+//   should squeeze far less: the cut faces stop at the contact's 10 µm and a snug knot's pull
+//   spreads over bites of 0.2–0.3 mm. That is argued, not measured: no shipped scene or
+//   recording ties a stitch through the wall yet (the shipped stitch is drawn through, not
+//   tied: 0.000).
 //
 // Thread in the lumen. Each thread node (the swage to the tail; the needle is not thread)
 // inside an end of the vessel, behind its cut ring and ahead of its clamped ring along its
@@ -44,8 +46,9 @@
 //   Limit: depth > `lumenMarginWalls` = 0.5 wall thicknesses (50 µm in a 0.1 mm wall). A
 //   thread lying on the intima stands off it by its own radius (10-0 nylon: 11 µm) and the
 //   contact's thickness (10 µm), and the faceted inner hull lies up to r_i(1 − cos(π/P))
-//   inside the circle through its nodes (8 µm for P = 16): half a wall is more than twice
-//   all that, thread standing out into the bloodstream where it gathers platelets.
+//   inside the circle through its nodes (8 µm for P = 16): 29 µm in all. Deeper than half a
+//   wall, nearly twice that, the thread stands out into the bloodstream where it gathers
+//   platelets, not on the intima.
 //
 // Large edge overlap. Around the line every `sampleDeg`, each end's cut lip at that angle,
 // the mid-wall point between its outer and inner hull's (cutRingLip); with a end 0's unit
