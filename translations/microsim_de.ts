@@ -1690,6 +1690,18 @@
         <source>links torn: %1</source>
         <translation>gerissene Verbindungen: %1</translation>
     </message>
+    <message>
+        <source>bites squeezed by %1</source>
+        <translation>Stiche um %1 gestaucht</translation>
+    </message>
+    <message>
+        <source>%1 into the lumen</source>
+        <translation>%1 ins Lumen hinein</translation>
+    </message>
+    <message>
+        <source>edges past each other, %1 out of line</source>
+        <translation>Ränder übereinander, %1 versetzt</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::FeedbackText</name>

@@ -1690,6 +1690,18 @@
         <source>links torn: %1</source>
         <translation>enlaces rotos: %1</translation>
     </message>
+    <message>
+        <source>bites squeezed by %1</source>
+        <translation>pasos comprimidos un %1</translation>
+    </message>
+    <message>
+        <source>%1 into the lumen</source>
+        <translation>%1 dentro de la luz</translation>
+    </message>
+    <message>
+        <source>edges past each other, %1 out of line</source>
+        <translation>bordes superpuestos, desalineados %1</translation>
+    </message>
 </context>
 <context>
     <name>microsim::gui::FeedbackText</name>

@@ -130,8 +130,22 @@ QString EndProductPanel::measured(const assessment::EndProductError& e) {
     case K::WallTear:
       value = tr("links torn: %1").arg(std::lround(e.measured));
       break;
+    case K::OverTightStitch:
+      value = tr("bites squeezed by %1").arg(NumberFormat::percent(e.measured));
+      limit = NumberFormat::percent(e.limit);
+      break;
+    case K::ThreadInLumen:
+      value = tr("%1 into the lumen").arg(NumberFormat::value(e.measured, "mm"));
+      limit = NumberFormat::value(e.limit, "mm");
+      break;
+    case K::LargeEdgeOverlap:
+      value =
+          tr("edges past each other, %1 out of line").arg(NumberFormat::value(e.measured, "mm"));
+      limit = NumberFormat::value(e.limit, "mm");
+      break;
     default:
       value = NumberFormat::value(e.measured, assessment::endProductErrorUnit(e.kind));
+      limit = NumberFormat::value(e.limit, assessment::endProductErrorUnit(e.kind));
       break;
   }
   return std::isfinite(e.limit) ? tr("%1 (limit %2)").arg(value, limit) : value;

@@ -141,6 +141,7 @@ std::variant<Attempt, ReplayError> replayAttempt(const sim::SceneDef& def,
   Attempt a = recorder.attempt(scene);
   a.truncated = truncated;
   a.leak = leakFinding(sim::leakTest(scene));
+  a.endState = sim::checkEndState(scene);
   return a;
 }
 

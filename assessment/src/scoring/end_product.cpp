@@ -184,6 +184,29 @@ void addEventErrors(const Attempt& attempt, const EndProductView& v,
   }
 }
 
+// what the final scene showed (sim/scene/end_state_check.h), in the check's order
+void addEndStateErrors(const Attempt& attempt, std::vector<EndProductError>& out) {
+  if (!attempt.endState) return;
+  for (const sim::EndStateFinding& f : attempt.endState->findings) {
+    EndProductError e;
+    switch (f.kind) {
+      case sim::EndStateKind::OverTightStitch:
+        e.kind = LapseKind::OverTightStitch;
+        break;
+      case sim::EndStateKind::ThreadInLumen:
+        e.kind = LapseKind::ThreadInLumen;
+        break;
+      case sim::EndStateKind::LargeEdgeOverlap:
+        e.kind = LapseKind::LargeEdgeOverlap;
+        break;
+    }
+    e.angleDeg = f.angleDeg;
+    e.measured = f.measured;
+    e.limit = f.limit;
+    out.push_back(e);
+  }
+}
+
 }  // namespace
 
 std::span<const EndProductErrorKind> endProductErrorKinds() {
@@ -233,14 +256,15 @@ std::string_view endProductErrorUnit(EndProductErrorKind kind) {
     case LapseKind::WideBite:
       return "walls";
     case LapseKind::UnequalSpacing:
+    case LapseKind::OverTightStitch:
       return "1";
+    case LapseKind::ThreadInLumen:
+    case LapseKind::LargeEdgeOverlap:
+      return "mm";
     case LapseKind::WallTear:
       return "count";
     case LapseKind::BackWallStitch:
     case LapseKind::PartialThicknessBite:
-    case LapseKind::OverTightStitch:
-    case LapseKind::ThreadInLumen:
-    case LapseKind::LargeEdgeOverlap:
       return "";
   }
   return "";
@@ -255,6 +279,7 @@ std::vector<EndProductError> endProductErrors(const Attempt& attempt,
   addObliqueStitches(v, limits, out);
   addUnequalSpacing(v, limits, out);
   addEventErrors(attempt, v, out);
+  addEndStateErrors(attempt, out);
 
   // the pressure test: the line leaks at its largest gap
   if (leak && leak->leaks) {

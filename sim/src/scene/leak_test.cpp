@@ -30,24 +30,13 @@ constexpr int kLeakDoublings = 10;
 constexpr double kLeakFirstShift = 1e-5;
 constexpr double kLeakLastShift = 1e4;
 
-/// The angle frame of the suture line: end 0's axis and the unit 0° direction normal to it.
-struct LeakFrame {
-  Vec3 axis = Vec3::UnitX();
-  Vec3 zero = Vec3::UnitZ();
-
-  Vec3 direction(double deg) const {
-    const double a = deg * std::numbers::pi / 180.0;
-    return std::cos(a) * zero + std::sin(a) * axis.cross(zero);
-  }
-};
-
-LeakFrame leakFrame(const SceneDef& def, const SceneVessel& end0, const LeakTestParams& params) {
-  LeakFrame f;
-  f.axis = end0.def.direction.normalized();
-  const Vec3 cutCentre = end0.def.origin + end0.def.length * f.axis;
-  f.zero = circumferenceZero(
-      f.axis, params.angleZero ? *params.angleZero : Vec3(def.camera.eye - cutCentre));
-  return f;
+/// The angle frame of the suture line: end 0's axis, 0° toward `params.angleZero` or the camera.
+CircumferenceFrame leakFrame(const SceneDef& def, const SceneVessel& end0,
+                             const LeakTestParams& params) {
+  const Vec3 axis = end0.def.direction.normalized();
+  const Vec3 cutCentre = end0.def.origin + end0.def.length * axis;
+  return circumferenceFrame(
+      axis, params.angleZero ? *params.angleZero : Vec3(def.camera.eye - cutCentre));
 }
 
 /// A tie as a weighted point of six nodes: d = Σ w_k x_k = p_b − p_a.
@@ -310,7 +299,7 @@ std::vector<SutureLineSample> sutureLine(const SceneDef& def, const Points& x,
                                          const LeakTestParams& params) {
   const auto ends = collide::severedEnds(def.vessels);
   if (ends[0] == nullptr || ends[1] == nullptr || !(params.sampleDeg > 0.0)) return {};
-  const LeakFrame frame = leakFrame(def, *ends[0], params);
+  const CircumferenceFrame frame = leakFrame(def, *ends[0], params);
   const SpringModel& model = def.tissue.model;
 
   // at each angle the axial opening of the narrower hull, closed at 0

@@ -44,19 +44,55 @@ QString scoreReportText(const as::AttemptScore& s) {
   return text;
 }
 
+// the first line of the report naming `name`, its runs of spaces made one; empty for none
+QString scoreReportRow(const QString& text, const QString& name) {
+  for (const QString& l : text.split(QLatin1Char('\n')))
+    if (l.contains(name)) return l.simplified();
+  return {};
+}
+
 TEST(ScoreReport, EachEndProductErrorIsARowWithItsPlaceAndNumbers) {
   const QString text = scoreReportText(scoreWithLapses());
   EXPECT_TRUE(text.contains(QStringLiteral("end product  lapse index 2"))) << text.toStdString();
-  const QStringList lines = text.split(QLatin1Char('\n'));
-  const auto row = [&](const QString& name) {
-    for (const QString& l : lines)
-      if (l.contains(name)) return l.simplified();
-    return QString();
-  };
+  const auto row = [&](const QString& name) { return scoreReportRow(text, name); };
   EXPECT_EQ(row(QStringLiteral("wide bite")),
             QStringLiteral("1 wide bite 2 3 135.0 4.000 3.00 walls"));
   EXPECT_EQ(row(QStringLiteral("suture-line disruption")),
             QStringLiteral("2 suture-line disruption – – – – –"));
+}
+
+// the final scene's three (sim/scene/end_state_check.h): located by angle only, each in its unit
+TEST(ScoreReport, TheFinalScenesLapsesAreRowsWithTheirAngleAndUnit) {
+  as::AttemptScore s;
+  const as::EndProductErrorKind kinds[3] = {as::EndProductErrorKind::OverTightStitch,
+                                            as::EndProductErrorKind::ThreadInLumen,
+                                            as::EndProductErrorKind::LargeEdgeOverlap};
+  const double measured[3] = {0.4, 0.2, 0.09};
+  const double limits[3] = {0.25, 0.05, 0.05};
+  for (std::size_t k = 0; k < 3; ++k) {
+    as::EndProductError e;
+    e.kind = kinds[k];
+    e.angleDeg = 100.0 * static_cast<double>(k + 1);
+    e.measured = measured[k];
+    e.limit = limits[k];
+    s.endProduct.push_back(e);
+  }
+  const QString text = scoreReportText(s);
+  const auto row = [&](const QString& name) { return scoreReportRow(text, name); };
+  EXPECT_EQ(row(QStringLiteral("over-tight stitch")),
+            QStringLiteral("1 over-tight stitch – – 100.0 0.400 0.25 1"));
+  EXPECT_EQ(row(QStringLiteral("thread in the lumen")),
+            QStringLiteral("2 thread in the lumen – – 200.0 0.200 0.05 mm"));
+  EXPECT_EQ(row(QStringLiteral("large edge overlap")),
+            QStringLiteral("3 large edge overlap – – 300.0 0.090 0.05 mm"));
+  const nlohmann::json errors =
+      cli::scoreReportJson(s, as::Rubric{}, cli::ScoredFiles{}).at("end_product");
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0].at("kind"), "over_tight_stitch");
+  EXPECT_EQ(errors[1].at("kind"), "thread_in_lumen");
+  EXPECT_EQ(errors[2].at("kind"), "large_edge_overlap");
+  EXPECT_EQ(errors[2].at("unit"), "mm");
+  EXPECT_EQ(errors[2].at("angle_deg"), 300.0);
 }
 
 TEST(ScoreReport, TheJsonGivesEachErrorsKeyIndicesAndNumbers) {

@@ -1,9 +1,13 @@
 // The finished anastomosis judged on hand-made stitches around one severed vessel: a clean ring
 // has no error, each lapse is found at its stitch, passage and angle, a hole the thread never
-// reached is not judged, events and a leak are disruptions and tears, the metric keys count
-// them, and the shipped stitch (one clean stitch) shows none.
+// reached is not judged, events and a leak are disruptions and tears, the final scene's
+// over-tight stitches, thread in the lumen and edge overlaps (sim/scene/end_state_check.h) are
+// reported where the check found them, the metric keys count them, and the shipped stitch (one
+// clean stitch) shows none.
 #include "microsim/assessment/scoring/end_product.h"
 #include "microsim/assessment/scoring/metrics.h"
+
+#include "microsim/sim/scene/scene_def.h"
 
 #include "support/severed_vessel.h"
 
@@ -13,6 +17,7 @@
 #include <numbers>
 #include <set>
 #include <string>
+#include <variant>
 
 namespace {
 
@@ -250,6 +255,80 @@ TEST(EndProduct, EveryKindHasItsOwnStableKey) {
   EXPECT_EQ(endProductErrorKey(EndProductErrorKind::LargeEdgeOverlap), "large_edge_overlap");
   EXPECT_EQ(endProductErrorUnit(EndProductErrorKind::WideBite), "walls");
   EXPECT_EQ(endProductErrorUnit(EndProductErrorKind::BackWallStitch), "");
+  EXPECT_EQ(endProductErrorUnit(EndProductErrorKind::OverTightStitch), "1");
+  EXPECT_EQ(endProductErrorUnit(EndProductErrorKind::ThreadInLumen), "mm");
+  EXPECT_EQ(endProductErrorUnit(EndProductErrorKind::LargeEdgeOverlap), "mm");
+}
+
+TEST(EndProduct, TheFinalScenesLapsesComeAfterTheEventsBeforeTheLeak) {
+  Attempt a = cleanRing();
+  a.events = {endProductEvent(SceneEventKind::SutureBreak, 12)};
+  microsim::sim::EndStateResult end;
+  using microsim::sim::EndStateKind;
+  end.findings = {{EndStateKind::OverTightStitch, 45.0, 0.4, 0.25},
+                  {EndStateKind::ThreadInLumen, 100.0, 0.2, 0.05},
+                  {EndStateKind::LargeEdgeOverlap, 210.0, 0.09, 0.05}};
+  a.endState = end;
+  LeakFinding leak;
+  leak.leaks = true;
+  leak.angleDeg = 300.0;
+  const std::vector<EndProductError> errors = endProductErrors(a, leak);
+  ASSERT_EQ(errors.size(), 5u);
+  EXPECT_EQ(errors[0].kind, EndProductErrorKind::SutureLineDisruption);
+  EXPECT_EQ(errors[0].event, 0);
+  const EndProductErrorKind kinds[3] = {EndProductErrorKind::OverTightStitch,
+                                        EndProductErrorKind::ThreadInLumen,
+                                        EndProductErrorKind::LargeEdgeOverlap};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const EndProductError& e = errors[k + 1];
+    EXPECT_EQ(e.kind, kinds[k]) << k;
+    EXPECT_DOUBLE_EQ(e.angleDeg, end.findings[k].angleDeg);
+    EXPECT_DOUBLE_EQ(e.measured, end.findings[k].measured);
+    EXPECT_DOUBLE_EQ(e.limit, end.findings[k].limit);
+    EXPECT_EQ(e.stitch, -1);
+    EXPECT_EQ(e.passage, -1);
+    EXPECT_EQ(e.event, -1);
+  }
+  EXPECT_DOUBLE_EQ(errors[4].angleDeg, 300.0);
+  // counted in the lapse index, unlike the leak
+  EXPECT_EQ(computeMetrics(a).value("lapse_index"), 4.0);
+  // a final scene that showed nothing, or none looked at, adds nothing
+  a.endState = microsim::sim::EndStateResult{};
+  EXPECT_EQ(endProductErrors(a).size(), 1u);
+  a.endState.reset();
+  EXPECT_EQ(endProductErrors(a).size(), 1u);
+}
+
+TEST(EndProduct, AnEdgeRiddenOverTheOtherInTheShippedSceneIsALargeOverlapThere) {
+  microsim::sim::SceneDefLoad load =
+      microsim::sim::loadSceneDef(kEndProductRoot + "/resources/scenes/anastomosis.json");
+  ASSERT_TRUE(std::holds_alternative<microsim::sim::SceneDef>(load));
+  const microsim::sim::SceneDef& def = std::get<microsim::sim::SceneDef>(load);
+  Attempt a = assembleAttempt(def, {}, {}, {}, 0.0);
+  // end 1's cut edge from 90° to 180° drawn a wall's thickness in and 0.6 mm across end 0's
+  const auto& end1 = def.vessels[1];
+  const int p = end1.def.nodesPerRing;
+  microsim::sim::Points x = def.tissue.model.restPositions();
+  const VesselGeometry& g = a.vessels[0];
+  for (int hull = 0; hull < 2; ++hull)
+    for (int j = 0; j < p; ++j) {
+      const int node = end1.firstNode + ((end1.def.rings - 1) * 2 + hull) * p + j;
+      if (!(std::abs(std::remainder(circumferentialAngleDeg(g, x.col(node)) - 135.0, 360.0)) <=
+            45.0))
+        continue;
+      Vec3 radial = x.col(node) - end1.def.origin;
+      radial.x() = 0.0;
+      x.col(node) += Vec3(-0.6, 0.0, 0.0) - 0.1 * radial.normalized();
+    }
+  a.endState = microsim::sim::checkEndState(def, x, nullptr);
+  const std::vector<EndProductError> errors = endProductErrors(a);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].kind, EndProductErrorKind::LargeEdgeOverlap);
+  // where it rides, in the pierces' angles, and by a wall's thickness against half of one
+  EXPECT_GE(errors[0].angleDeg, 90.0);
+  EXPECT_LE(errors[0].angleDeg, 180.0);
+  EXPECT_NEAR(errors[0].measured, 0.1, 0.01);
+  EXPECT_DOUBLE_EQ(errors[0].limit, 0.05);
 }
 
 TEST(EndProduct, TheShippedStitchIsOneStitchWithoutALapse) {
@@ -268,6 +347,19 @@ TEST(EndProduct, TheShippedStitchIsOneStitchWithoutALapse) {
   }
   EXPECT_LT(angularDistanceDeg(passages[0].circumferenceDeg, passages[1].circumferenceDeg), 1.0);
   EXPECT_TRUE(endProductErrors(a).empty());
+  // the final scene looked at, and clean: no stitch squeezed, no thread in the lumen, the
+  // edges nowhere past each other
+  ASSERT_TRUE(a.endState.has_value());
+  EXPECT_EQ(a.endState->status, microsim::sim::EndStateStatus::Checked);
+  EXPECT_TRUE(a.endState->findings.empty());
+  for (const microsim::sim::StitchCompression& s : a.endState->stitches) {
+    ::testing::Test::RecordProperty("shipped_compression", std::to_string(s.compression));
+    EXPECT_LT(s.compression, 0.25);
+  }
+  ::testing::Test::RecordProperty("shipped_deepest_thread_mm",
+                                  std::to_string(a.endState->deepestThreadMm));
+  ::testing::Test::RecordProperty("shipped_overlap_offset_mm",
+                                  std::to_string(a.endState->largestOverlapOffsetMm));
 
   // a stricter examiner's bite limit finds the first bite, where it is
   EndProductLimits strict;

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <map>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace microsim::assessment {
 namespace {
@@ -61,6 +63,19 @@ class HistoryRoles : public HistoryBackend {
     ASSERT_TRUE(anaAttempt_ && benAttempt_);
     ASSERT_TRUE(scores_.finish(anaAttempt_, sampleScore(82), QByteArray("MSREC\0\x01\x02", 8)));
     ASSERT_TRUE(scores_.finish(benAttempt_, sampleScore(41), {}));
+  }
+
+  /// Ben's new test attempt finished with sampleScore(score) and these end-product errors; its
+  /// id, 0 when it could not be stored.
+  qint64 benScoredWithErrors(double score, std::vector<EndProductError> errors) {
+    AttemptScore s = sampleScore(score);
+    s.endProduct = std::move(errors);
+    const qint64 id =
+        attempts_.begin(ben_, QStringLiteral("03_stitch"), AttemptMode::Test).value_or(0);
+    EXPECT_NE(id, 0);
+    const bool stored = id != 0 && scores_.finish(id, s, {});
+    EXPECT_TRUE(stored) << scores_.lastError().driverMessage.toStdString();
+    return stored ? id : 0;
   }
 
   HistoryDatabase db_;
@@ -324,14 +339,11 @@ TEST_P(HistoryRoles, CsvExportQuotesAndFollowsRoles) {
 // refused any change like the rest of a score, and the CSV counts and names them
 TEST_P(HistoryRoles, EndProductErrorsAreStoredReadBackAndExported) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  AttemptScore s = sampleScore(55);
-  s.endProduct = {{EndProductErrorKind::BackWallStitch, 0, 1, -1, 182.5, nan, nan},
-                  {EndProductErrorKind::WideBite, -1, 0, -1, 10.0, 3.4, 3.0},
-                  {EndProductErrorKind::WallTear, -1, -1, 7, nan, 1.0, nan}};
   const qint64 id =
-      attempts_.begin(ben_, QStringLiteral("03_stitch"), AttemptMode::Test).value_or(0);
+      benScoredWithErrors(55, {{EndProductErrorKind::BackWallStitch, 0, 1, -1, 182.5, nan, nan},
+                               {EndProductErrorKind::WideBite, -1, 0, -1, 10.0, 3.4, 3.0},
+                               {EndProductErrorKind::WallTear, -1, -1, 7, nan, 1.0, nan}});
   ASSERT_NE(id, 0);
-  ASSERT_TRUE(scores_.finish(id, s, {})) << scores_.lastError().driverMessage.toStdString();
 
   const auto d = readAttemptDetail(db_, {ines_, Role::Instructor}, id);
   ASSERT_TRUE(d.has_value());
@@ -393,6 +405,33 @@ TEST_P(HistoryRoles, EndProductErrorsAreStoredReadBackAndExported) {
   // started, then empty: finished, score, passed, rubric, version, count, kinds
   EXPECT_TRUE(records[3].contains(QStringLiteral(",in_progress,"))) << records[3].toStdString();
   EXPECT_TRUE(records[3].endsWith(QStringLiteral("Z,,,,,,,"))) << records[3].toStdString();
+}
+
+// the final scene's three (sim/scene/end_state_check.h), located by angle with a measure and
+// a limit, come back as they were scored
+TEST_P(HistoryRoles, TheFinalScenesLapsesRoundTrip) {
+  const std::vector<EndProductError> stored = {
+      {EndProductErrorKind::OverTightStitch, -1, -1, -1, 45.5, 0.4, 0.25},
+      {EndProductErrorKind::ThreadInLumen, -1, -1, -1, 100.25, 0.2, 0.05},
+      {EndProductErrorKind::LargeEdgeOverlap, -1, -1, -1, 210.0, 0.09, 0.05}};
+  const qint64 id = benScoredWithErrors(61, stored);
+  ASSERT_NE(id, 0);
+
+  const auto d = readAttemptDetail(db_, {ines_, Role::Instructor}, id);
+  ASSERT_TRUE(d.has_value());
+  ASSERT_TRUE(d->endProduct.judged);
+  ASSERT_EQ(d->endProduct.errors.size(), 3);
+  for (int i = 0; i < 3; ++i) {
+    const EndProductError& want = stored[static_cast<std::size_t>(i)];
+    const EndProductError& got = d->endProduct.errors[i];
+    EXPECT_EQ(got.kind, want.kind) << i;
+    EXPECT_EQ(got.stitch, -1);
+    EXPECT_EQ(got.passage, -1);
+    EXPECT_EQ(got.event, -1);
+    EXPECT_DOUBLE_EQ(got.angleDeg, want.angleDeg);
+    EXPECT_DOUBLE_EQ(got.measured, want.measured);
+    EXPECT_DOUBLE_EQ(got.limit, want.limit);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, HistoryRoles, ::testing::Values(Driver::SQLite, Driver::PostgreSQL),

@@ -161,6 +161,31 @@ TEST(OpenedVesselImage, LabelsOfCrowdedErrorsNeitherOverlapNorLeaveTheWall) {
       EXPECT_FALSE(layout.axisLabels[i].rect.intersects(layout.axisLabels[j].rect));
 }
 
+// the final scene's lapses (sim/scene/end_state_check.h) have an angle and no passage: each on
+// the suture line at its angle, in the legend in its own words
+TEST(OpenedVesselImage, TheFinalScenesLapsesAreMarkedOnTheSutureLineAtTheirAngle) {
+  OpenedVessel v = stitchesAt({45.0});
+  v.errors = {error(EndProductErrorKind::OverTightStitch, 45.0),
+              error(EndProductErrorKind::ThreadInLumen, 180.0),
+              error(EndProductErrorKind::LargeEdgeOverlap, 270.0)};
+  const OpenedVesselLayout layout = OpenedVesselImage::layOut(v, kSize);
+  const QRectF& wall = layout.wall;
+  ASSERT_EQ(layout.marks.size(), 3u);
+  EXPECT_TRUE(layout.unlocated.empty());
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(layout.marks[i].at.x(), wall.left() + wall.width() * v.errors[i].angleDeg / 360.0,
+                1e-9)
+        << i;
+    EXPECT_NEAR(layout.marks[i].at.y(), layout.sutureLineY, 1e-9) << i;
+  }
+  ASSERT_EQ(layout.legend.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(layout.legend[i].kind, v.errors[i].kind);
+    EXPECT_EQ(layout.legend[i].text.text, i18n::EndProductWords::kind(v.errors[i].kind));
+    EXPECT_FALSE(layout.legend[i].text.text.isEmpty());
+  }
+}
+
 TEST(OpenedVesselImage, ErrorsWithNoAngleAreNamedUnderTheLegend) {
   OpenedVessel v = stitchesAt({45.0});
   v.errors = {error(EndProductErrorKind::WideBite, 45.0, 0, 0),

@@ -155,6 +155,24 @@ TEST(EndProductPanel, NamesWhatWasMeasuredAgainstItsLimit) {
   EXPECT_EQ(EndProductPanel::measured(tear), QStringLiteral("links torn: 2"));
   EXPECT_EQ(EndProductPanel::where(tear), QStringLiteral("not located"));
   EXPECT_TRUE(EndProductPanel::summary({}, false).contains(QStringLiteral("not judged")));
+  // the final scene's three and the leak, each against its limit in its unit
+  const auto endState = [](assessment::EndProductErrorKind kind, double measured, double limit) {
+    assessment::EndProductError e;
+    e.kind = kind;
+    e.angleDeg = 90.0;
+    e.measured = measured;
+    e.limit = limit;
+    return e;
+  };
+  using K = assessment::EndProductErrorKind;
+  EXPECT_EQ(EndProductPanel::measured(endState(K::OverTightStitch, 0.4, 0.25)),
+            QStringLiteral("bites squeezed by 40 % (limit 25 %)"));
+  EXPECT_EQ(EndProductPanel::measured(endState(K::ThreadInLumen, 0.2, 0.05)),
+            QStringLiteral("0,2 mm into the lumen (limit 0,05 mm)"));
+  EXPECT_EQ(EndProductPanel::measured(endState(K::LargeEdgeOverlap, 0.09, 0.05)),
+            QStringLiteral("edges past each other, 0,09 mm out of line (limit 0,05 mm)"));
+  EXPECT_EQ(EndProductPanel::measured(endState(K::SutureLineDisruption, 0.12, 0.05)),
+            QStringLiteral("0,12 mm (limit 0,05 mm)"));
   QLocale::setDefault(previous);
 }
 

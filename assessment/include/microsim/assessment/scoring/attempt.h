@@ -15,6 +15,7 @@
 //
 // Units: millimetres, seconds, degrees.
 
+#include "microsim/sim/scene/end_state_check.h"
 #include "microsim/sim/scene/input_frame.h"
 #include "microsim/sim/scene/leak_test.h"
 #include "microsim/sim/scene/recording.h"
@@ -84,6 +85,9 @@ struct Attempt {
   /// the leak test on the final scene (sim::leakTest at its default 100 mmHg), which
   /// replayAttempt runs; none for an attempt captured or built otherwise
   std::optional<LeakFinding> leak;
+  /// the final scene looked at (sim::checkEndState: over-tight stitches, thread in the lumen,
+  /// edge overlap), which replayAttempt runs; none for an attempt captured or built otherwise
+  std::optional<sim::EndStateResult> endState;
 };
 
 /// The geometry of the scene's vessels (the camera gives the circumferential 0°).
@@ -127,9 +131,10 @@ struct ReplayError {
   sim::RecordingStatus recording;
 };
 
-/// Steps a Deterministic scene through a recording's frames, then runs the leak test on the
-/// final scene (Attempt::leak). A Truncated recording replays its complete frames and the
-/// Attempt says truncated; any other recording error fails.
+/// Steps a Deterministic scene through a recording's frames, then runs the leak test and the
+/// end-state check on the final scene (Attempt::leak, Attempt::endState). A Truncated
+/// recording replays its complete frames and the Attempt says truncated; any other recording
+/// error fails.
 std::variant<Attempt, ReplayError> replayAttempt(const std::string& scenePath,
                                                  const std::string& recordingPath);
 /// The same on a recording already in memory.

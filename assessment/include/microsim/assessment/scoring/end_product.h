@@ -24,11 +24,21 @@
 //                           the stitch the gap starts from (going up in angle).
 //   wall tear               each TissueTear event. The event names only a tissue link, and
 //                           an Attempt has no mesh to place it on: not located (angle NaN).
-// What needs the final scene state, which an Attempt does not carry (never reported here):
-//   over-tight stitch       the wall strangled inside a tied loop: the loop's final length
-//                           against the tissue it encloses.
-//   thread in the lumen     a loop or cut end lying inside the vessel's inner surface.
-//   large edge overlap      one cut edge riding over the other: the final cut-edge rings.
+//   over-tight stitch       the final scene (Attempt::endState, sim/scene/end_state_check.h):
+//                           a stitch's loop squeezing the bites it holds, their length now
+//                           against at rest, compression beyond a quarter (1); located at
+//                           the stitch's holes' mean angle.
+//   thread in the lumen     the final scene: thread (a loop, a cut end) inside an end's inner
+//                           surface deeper than half a wall (mm), other than a stitch's
+//                           crossing between its inner holes and a passage's track through
+//                           the wall; located at its deepest node.
+//   large edge overlap      the final scene: the cut edges past each other with their
+//                           mid-walls radially offset by more than half a wall (mm); located
+//                           at the largest offset of each stretch of the line where they are.
+//                           The check's limits are its own (EndStateParams), given with
+//                           each error.
+// Without a final scene (an attempt captured live, or built in a test) these three are not
+// judged.
 //
 // A passage whose hole the thread never reached (PierceReleased: the needle was drawn back or
 // moved off) is not in the finished anastomosis: needle trauma, not a bite. Its passage, and
@@ -61,9 +71,9 @@ enum class EndProductErrorKind : std::uint8_t {
   PartialThicknessBite,
   UnequalSpacing,
   WallTear,
-  OverTightStitch,   ///< needs the final scene state: never reported yet
-  ThreadInLumen,     ///< needs the final scene state: never reported yet
-  LargeEdgeOverlap,  ///< needs the final scene state: never reported yet
+  OverTightStitch,   ///< from the final scene (Attempt::endState)
+  ThreadInLumen,     ///< from the final scene
+  LargeEdgeOverlap,  ///< from the final scene
 };
 
 /// The kinds, in enum order.
@@ -104,7 +114,8 @@ struct EndProductError {
 
 /// Every error the attempt's end product shows: passages in order (back wall, partial
 /// thickness, wide bite), then stitches (oblique), the spacing, then the events in order
-/// (tears, breaks, pull-outs), then the leak.
+/// (tears, breaks, pull-outs), then the final scene's (Attempt::endState: over-tight stitches,
+/// thread in the lumen, edge overlaps, as the check lists them), then the leak.
 std::vector<EndProductError> endProductErrors(const Attempt& attempt,
                                               const std::optional<LeakFinding>& leak = std::nullopt,
                                               const EndProductLimits& limits = {});

@@ -30,8 +30,11 @@
 //   bite_symmetry        mm     mean |bite_a − bite_b| of the stitches
 //   spacing              deg    mean angle between consecutive stitches
 //   triangulation_error  deg    largest |arc − 120°| of the first three stitches
-//   lapse_index          count  errors of the finished anastomosis (end_product.h; without the
-//                               leak test, Attempt::leak, which the score report shows beside)
+//   lapse_index          count  errors of the finished anastomosis (end_product.h; with the
+//                               final scene's over-tight stitches, thread in the lumen and edge
+//                               overlaps when the attempt carries them, Attempt::endState;
+//                               without the leak test, Attempt::leak, which the score report
+//                               shows beside)
 //   oblique_stitches     count  of them, stitches not parallel to the axis
 //   partial_thickness_bites
 //                        count  passages not through the whole wall
