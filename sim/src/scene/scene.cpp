@@ -266,12 +266,13 @@ void Scene::stepSuture() {
     world.surface = surface_.get();
   }
   // the jaws are solid to the thread, open or closed, unless they hold it, and leave clear what
-  // lies between them (thread_jaw_obstacles.h): it is wound round them in the instrument tie
+  // lies between them (thread_jaw_obstacles.h): it is wound round them in the instrument tie.
+  // A needle lying free (nothing holds the suture) is the one opened jaws reach round to take.
+  const int freeNeedleSwage = suture_->def().needleLinks > 0 && grips.empty() ? suture_->swage() : -1;
   for (std::size_t h = 0; h < forceps_.size(); ++h) {
     const auto& f = forceps_[h];
     if (f && jawsPlaced_[h])
-      appendThreadJawObstacles(*f, sutureState_.x, suture_->def().needleLinks > 0 ? suture_->swage() : -1,
-                               suture_->def().contactRadius, world.capsules);
+      appendThreadJawObstacles(*f, sutureState_.x, freeNeedleSwage, suture_->def().contactRadius, world.capsules);
   }
   suture::SutureStepParams params = def_.needle->step;
   params.dt = dt();

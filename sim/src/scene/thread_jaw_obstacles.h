@@ -9,9 +9,10 @@
 // clear: what the jaws close on is theirs to take, and capsules round their axes, which
 // overlap long before the gripping faces meet, would squeeze it out first; the turns round the
 // jaws still meet a rod. Jaws that hold the thread are left out: it lies inside both. So are
-// opened jaws with the needle (nodes 0..swage) within 0.5 mm of them: a rigid needle lying
-// free would be knocked away by the jaws reaching round it, and a trainee steering them with
-// keys could hardly take it (the hands test of lesson 2 missed its grip one run in two).
+// opened jaws with a needle lying free (nothing holds the suture) within 0.5 mm of them: the
+// rigid needle would be knocked away by the jaws reaching round it, and a trainee steering
+// them with keys could hardly take it (the hands test of lesson 2 missed its grip one run in
+// two). A needle hanging from a thread another forceps holds does not count.
 //
 // Between the jaws, in the tool frame (forceps.h: x from the tip to the hinge, the jaws
 // opening in ±y): a node with the hinge ahead of it (x ≤ L), no nearer the tip than the open
@@ -30,8 +31,8 @@
 
 namespace microsim::sim {
 
-/// Appends the jaws of `forceps` for the chain at positions x (the needle's nodes 0..swage,
-/// −1 without a needle, then the thread, of radius `threadRadius`, mm; header essay).
+/// Appends the jaws of `forceps` for the chain at positions x (a needle lying free on nodes
+/// 0..swage, −1 without one, then the thread, of radius `threadRadius`, mm; header essay).
 void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
                               std::vector<suture::Capsule>& out);
 
