@@ -65,14 +65,42 @@ bool needleAtJaws(const tools::Forceps& forceps, const Points& x, int swage, dou
   return false;
 }
 
+
+// the held node and the chain on either side of it inside the jaws: first and last node
+std::array<int, 2> heldRun(const tools::Forceps& forceps, const Points& x, double threadRadius) {
+  const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
+  const auto inside = [&](int i) {
+    for (const tools::JawCapsule& c : jaws) {
+      const double t = collide::closestParameterOnSegment(x.col(i), c.tip, c.heel);
+      const double radius = c.tipRadius + t * (c.heelRadius - c.tipRadius) + threadRadius;
+      if ((x.col(i) - ((1.0 - t) * c.tip + t * c.heel)).norm() < radius) return true;
+    }
+    return false;
+  };
+  const int last = static_cast<int>(x.cols()) - 1;
+  int first = forceps.heldSutureNode();
+  int end = std::min(forceps.heldSutureFraction() > 0.0 ? first + 1 : first, last);
+  while (first > 0 && inside(first - 1)) --first;
+  while (end < last && inside(end + 1)) ++end;
+  return {first, end};
+}
+
 }  // namespace
 
 void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
                               std::vector<suture::Capsule>& out) {
-  if (forceps.holdsSuture()) return;
+  const std::array<double, 2> radii = halfRadii(forceps.def());
+  if (forceps.holdsSuture()) {
+    const std::array<int, 2> held = heldRun(forceps, x, threadRadius);
+    for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
+      const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
+      out.push_back({jaw.tip, middle, radii[0], held[0], held[1]});
+      out.push_back({middle, jaw.heel, radii[1], held[0], held[1]});
+    }
+    return;
+  }
   if (!forceps.closed() && needleAtJaws(forceps, x, swage, kNeedleReach)) return;
   const std::vector<Vec3> between = threadBetweenJaws(forceps, x);
-  const std::array<double, 2> radii = halfRadii(forceps.def());
   for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
     const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
     out.push_back(clearOf(jaw.tip, middle, radii[0], between, threadRadius));

@@ -138,8 +138,11 @@ int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Caps
       const Capsule& c = capsules[k];
       const double reach = c.radius + radius;
       for (Eigen::Index i = first; i < end; ++i) {
+        // the thread the jaws hold, and the links from it, pass
+        const bool freeNode = i >= c.freeFirst && i <= c.freeLast;
+        const bool freeLink = i + 1 >= c.freeFirst && i <= c.freeLast;
         // the node: closest point of the axis, push out along the radial direction
-        if (movable[static_cast<std::size_t>(i)]) {
+        if (movable[static_cast<std::size_t>(i)] && !freeNode) {
           const Vec3 p = x.col(i);
           const double t = collide::closestParameterOnSegment(p, c.a, c.b);
           const Vec3 axis = (1.0 - t) * c.a + t * c.b;
@@ -159,7 +162,7 @@ int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Caps
         }
         // the link to the next node: a link as long as the jaw is thick may straddle it with
         // both nodes outside, and its nodes pushed to opposite sides could never meet again
-        if (i + 1 < nodes && (alive.empty() || alive[static_cast<std::size_t>(i)]) &&
+        if (i + 1 < nodes && !freeLink && (alive.empty() || alive[static_cast<std::size_t>(i)]) &&
             pushLinkOutOfCapsule(x, xStart, i, c, reach, friction, movable)) {
           touched[static_cast<std::size_t>(i)] = 1;
           touched[static_cast<std::size_t>(i + 1)] = 1;

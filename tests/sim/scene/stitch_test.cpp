@@ -78,7 +78,9 @@ TEST(Stitch, AScriptedPassGivesFourPiercesAtTheKnownPointsAndAngles) {
 }
 
 // The script puts the tools' tips on needle nodes (the holder's on the swage, the forceps' on
-// node 1): the grasp takes the needle there, on the node, as a node grip always did.
+// node 1): the grasp takes the needle there, on the node or within a few hundredths of a
+// micrometre of it (the holder's jaws, solid to the thread beyond the run they hold, nudge
+// the needle by that much before the forceps takes it).
 TEST(Stitch, TheScriptedToolsGripTheNeedleAtTheNodesTheScriptMeans) {
   const SceneDef def = anastomosis();
   const Recording rec = scriptedStitch(def);
@@ -87,7 +89,7 @@ TEST(Stitch, TheScriptedToolsGripTheNeedleAtTheNodesTheScriptMeans) {
     scene.step(f);
     for (const Hand hand : {Hand::Left, Hand::Right}) {
       if (scene.forceps(hand)->holdsSuture()) {
-        ASSERT_EQ(scene.forceps(hand)->heldSutureFraction(), 0.0);
+        ASSERT_LT(scene.forceps(hand)->heldSutureFraction(), 1e-3);
       }
     }
   }

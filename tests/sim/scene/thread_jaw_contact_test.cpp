@@ -194,5 +194,60 @@ TEST(ThreadJawContact, TurnsWoundOnTheJawsStayOnThemWhileTheyOpen) {
   EXPECT_TRUE(scene.sutureState()->x.allFinite());
 }
 
+// Jaws that hold the thread are solid to the rest of it (issue 19, item 1: the thread does not
+// pass through the jaws): a hairpin, strand A along x at y = 0, turned round at x = 2.5 and
+// back along x at y = 0.6 and 0.5 mm lower (strand B). The left forceps holds A's free end; the right forceps,
+// upright, takes B's middle and is carried 1 mm towards −y, across where A lies. Only the
+// held run of B passes inside its jaws: A is pushed ahead of them. Before, holding jaws were
+// no obstacle at all, and A passed through them.
+constexpr int kHairpinStrandLinks = 80;
+
+Points hairpinThread() {
+  namespace kt = suture::knot_test;
+  kt::ThreadBuilder b;
+  // A 0.5 mm above B, so the jaws rising from B meet it along their side, not at their tip
+  b.start(Vec3(-2.5, 0.0, 12.5));
+  b.lineTo(Vec3(2.5, 0.0, 12.5));
+  b.curve([](double t) {
+    return Vec3(2.5 + 0.3 * std::sin(t), 0.3 - 0.3 * std::cos(t), 12.5 - 0.5 * t / std::numbers::pi);
+  }, 0.0, std::numbers::pi);
+  b.lineTo(Vec3(-2.5, 0.6, 12.0));
+  const Points x = b.points();
+  return kt::evenlySpaced(x, 1.0, 2 * kHairpinStrandLinks + 20);
+}
+
+TEST(ThreadJawContact, JawsHoldingTheThreadPushTheRestOfItAhead) {
+  const std::optional<SceneDef> def = sceneWithThread(hairpinThread());
+  ASSERT_TRUE(def);
+  Scene scene(*def);
+  const Points start = scene.sutureState()->x;
+  const int last = static_cast<int>(start.cols()) - 1;
+  // B's middle: the node nearest (0, 0.6) on the way back
+  int middle = last;
+  for (int i = last; i > last / 2; --i)
+    if ((start.col(i) - Vec3(0.0, 0.6, 12.0)).norm() < (start.col(middle) - Vec3(0.0, 0.6, 12.0)).norm()) middle = i;
+  double clearance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 130; ++k) {
+    InputFrame f;
+    f.time = 0.01 * (k + 1);
+    f.hand(Hand::Left) = testing::forcepsOnThreadEnd(start, 0, 1, k < 2 ? 0.0 : 1.0);
+    f.hand(Hand::Right) = testing::forcepsAcrossThread(start, middle, k < 2 ? 0.0 : 1.0);
+    f.hand(Hand::Right).position.y() -= 0.01 * std::clamp(k - 20, 0, 100);
+    scene.step(f);
+    // strand A's links against the right jaws
+    const Points& x = scene.sutureState()->x;
+    for (const tools::JawCapsule& jaw : tools::jawCapsules(*scene.forceps(Hand::Right)))
+      for (int i = 0; i < kHairpinStrandLinks; ++i) {
+        const collide::SegmentClosest c = collide::closestSegmentSegment(x.col(i), x.col(i + 1), jaw.tip, jaw.heel);
+        clearance = std::min(clearance, c.distance - (jaw.tipRadius + c.t * (jaw.heelRadius - jaw.tipRadius)));
+      }
+  }
+  ASSERT_TRUE(scene.forceps(Hand::Right)->holdsSuture());
+  EXPECT_GT(clearance, -0.01);
+  // the jaws end 0.4 mm beyond where A lay: its middle went with them
+  EXPECT_LT(scene.sutureState()->x(1, kHairpinStrandLinks / 2), -0.2);
+  EXPECT_TRUE(scene.sutureState()->x.allFinite());
+}
+
 }  // namespace
 }  // namespace microsim::sim

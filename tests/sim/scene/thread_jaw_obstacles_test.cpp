@@ -89,7 +89,7 @@ TEST(ThreadJawObstacles, ThreadBetweenOpenedJawsIsLeftClearForThemToClose) {
   EXPECT_DOUBLE_EQ(out[0].radius, full[0].radius);
 }
 
-TEST(ThreadJawObstacles, JawsHoldingTheThreadOrOpenedRoundAFreeNeedleAreLeftOut) {
+TEST(ThreadJawObstacles, OpenedJawsRoundAFreeNeedleAreLeftOut) {
   const std::optional<ForcepsDef> def = shippedForceps();
   ASSERT_TRUE(def);
   // a needle (nodes 0..2) 0.3 mm beside the opened jaws' tips, then thread
@@ -103,15 +103,34 @@ TEST(ThreadJawObstacles, JawsHoldingTheThreadOrOpenedRoundAFreeNeedleAreLeftOut)
   appendThreadJawObstacles(uprightForceps(*def, 1.0, 1.0), x, 2, kObstacleThreadRadius, out);
   EXPECT_EQ(out.size(), 4U) << "closed jaws are solid wherever the needle is";
 
-  // holding the thread: the held thread lies inside both jaws
+}
+
+TEST(ThreadJawObstacles, JawsHoldingTheThreadLetOnlyTheHeldRunThrough) {
+  const std::optional<ForcepsDef> def = shippedForceps();
+  ASSERT_TRUE(def);
+  // a thread up the jaws' axis from their tip, held at its fourth node: the held thread lies
+  // inside both jaws, and the nodes inside them on either side pass; the rest meets them
+  Points x(3, 40);
+  for (int i = 0; i < 40; ++i) x.col(i) = Vec3(0.0, 0.0, -1.0 + 0.1 * i);  // the jaws span z 0..3
+  const suture::SutureDef sutureDef = [] {
+    suture::SutureDef d;
+    d.needleLinks = 0;
+    d.links = 39;
+    d.length = 3.9;
+    return d;
+  }();
+  const suture::SutureModel model(sutureDef);
   tools::Forceps holding = uprightForceps(*def, 0.0, 1.0);
-  const suture::SutureModel model(suture::SutureDef{});
-  const Points thread = suture::SutureState::laidOut(model, Eigen::Isometry3d::Identity()).x;
-  holding.holdSuture({model.swage() + 1, 0.0, 0.0}, model, thread);
+  holding.holdSuture({12, 0.0, 0.0}, model, x);
   ASSERT_TRUE(holding.holdsSuture());
-  out.clear();
-  appendThreadJawObstacles(holding, thread, -1, kObstacleThreadRadius, out);
-  EXPECT_TRUE(out.empty());
+  std::vector<suture::Capsule> out;
+  appendThreadJawObstacles(holding, x, -1, kObstacleThreadRadius, out);
+  ASSERT_EQ(out.size(), 4U);
+  for (const suture::Capsule& c : out) {
+    // from the node at the tip (z = 0; the one 0.1 mm below it is outside) to the last
+    EXPECT_EQ(c.freeFirst, 10);
+    EXPECT_EQ(c.freeLast, 39);
+  }
 }
 
 }  // namespace

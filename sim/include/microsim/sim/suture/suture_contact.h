@@ -43,10 +43,14 @@
 namespace microsim::sim::suture {
 
 /// A capsule: all points within `radius` of the segment (a, b) (mm). A forceps jaw.
+/// Nodes freeFirst..freeLast, and the links touching them, pass through it: the thread its
+/// jaws hold lies inside them.
 struct Capsule {
   Vec3 a = Vec3::Zero();
   Vec3 b = Vec3::Zero();
   double radius = 0.0;
+  int freeFirst = 0;
+  int freeLast = -1;
 };
 
 /// Nodes in [firstNode, lastNode] ignore `face` and the faces sharing a vertex with it
