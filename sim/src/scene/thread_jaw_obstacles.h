@@ -8,8 +8,11 @@
 // lies between opened jaws, each capsule is made thin enough to leave it a thread's radius
 // clear: what the jaws close on is theirs to take, and capsules round their axes, which
 // overlap long before the gripping faces meet, would squeeze it out first; the turns round the
-// jaws still meet a rod. Jaws that hold the thread are left out: it lies inside both. So are
-// opened jaws with a needle lying free (nothing holds the suture) within 0.5 mm of them: the
+// jaws still meet a rod. Jaws that hold the thread are solid to all of it but the held run:
+// the held node and the chain on either side of it inside the jaws' reach pass through their
+// capsules (Capsule::freeFirst..freeLast), so turns wound on the jaws stay on while they take
+// the tail and draw it back, and another strand is pushed ahead. Opened jaws are left out
+// with a needle lying free (nothing holds the suture) within 0.5 mm of them: the
 // rigid needle would be knocked away by the jaws reaching round it, and a trainee steering
 // them with keys could hardly take it (the hands test of lesson 2 missed its grip one run in
 // two). A needle hanging from a thread another forceps holds does not count.
