@@ -47,7 +47,7 @@ Points chainOf(const std::vector<Vec3>& nodes) {
 }
 
 /// mm: how far node p keeps outside the capsules (negative: inside one).
-double outside(const std::vector<suture::Capsule>& capsules, const Vec3& p) {
+double capsuleClearance(const std::vector<suture::Capsule>& capsules, const Vec3& p) {
   double clear = 1e9;
   for (const suture::Capsule& c : capsules) {
     const double t = collide::closestParameterOnSegment(p, c.a, c.b);
@@ -85,7 +85,7 @@ TEST(ThreadJawObstacles, ThreadBetweenOpenedJawsIsLeftClearForThemToClose) {
   ASSERT_EQ(out.size(), 4U);
   // thinned where the thread lies, a thread's radius clear of it, and only there
   EXPECT_LT(out[1].radius, full[1].radius - 0.05);
-  for (Eigen::Index i = 0; i < x.cols(); ++i) EXPECT_GE(outside(out, x.col(i)), kObstacleThreadRadius - 1e-12) << i;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) EXPECT_GE(capsuleClearance(out, x.col(i)), kObstacleThreadRadius - 1e-12) << i;
   EXPECT_DOUBLE_EQ(out[0].radius, full[0].radius);
 }
 
