@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace microsim::sim {
@@ -16,13 +17,18 @@ namespace {
 constexpr double kNeedleReach = 0.5;
 
 // the radii of the two capsules a jaw becomes: its tip half, its heel half (mm)
-std::array<double, 2> halfRadii(const ForcepsDef& def) {
-  const std::array<double, 2> radii = tools::jawRadii(def);
-  return {0.5 * (radii[0] + radii[1]), radii[1]};
+std::array<double, 2> halfRadii(const tools::JawCapsule& jaw) {
+  return {0.5 * (jaw.tipRadius + jaw.heelRadius), jaw.heelRadius};
+}
+
+// mm from p to the segment (a, b), and where along it (0..1)
+std::pair<double, double> fromAxis(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const double t = collide::closestParameterOnSegment(p, a, b);
+  return {(p - ((1.0 - t) * a + t * b)).norm(), t};
 }
 
 // the nodes of x between the jaws (header essay)
-std::vector<Vec3> threadBetweenJaws(const tools::Forceps& forceps, const Points& x) {
+std::vector<Vec3> threadBetweenJaws(const tools::Forceps& forceps, const std::array<double, 2>& radii, const Points& x) {
   std::vector<Vec3> between;
   const ForcepsDef& def = forceps.def();
   // the space as it was before this frame's closure: jaws closing keep clear of what they
@@ -32,7 +38,6 @@ std::vector<Vec3> threadBetweenJaws(const tools::Forceps& forceps, const Points&
   const double length = tools::jawLength(def);
   const double tanAngle = std::tan(angle);
   const double tipX = length - length * std::cos(angle);
-  const std::array<double, 2> radii = halfRadii(def);
   const Eigen::Isometry3d toTool = forceps.pose().inverse();
   for (Eigen::Index i = 0; i < x.cols(); ++i) {
     const Vec3 q = toTool * Vec3(x.col(i));
@@ -46,34 +51,25 @@ std::vector<Vec3> threadBetweenJaws(const tools::Forceps& forceps, const Points&
 // a capsule from a to b no thicker than leaves every node in `between` a thread's radius clear
 suture::Capsule clearOf(const Vec3& a, const Vec3& b, double radius, const std::vector<Vec3>& between,
                         double threadRadius) {
-  for (const Vec3& p : between) {
-    const double t = collide::closestParameterOnSegment(p, a, b);
-    radius = std::min(radius, (p - ((1.0 - t) * a + t * b)).norm() - threadRadius);
-  }
+  for (const Vec3& p : between) radius = std::min(radius, fromAxis(p, a, b).first - threadRadius);
   return {a, b, std::max(radius, 0.0)};
 }
 
 // true when a needle node (0..swage) lies within `reach` of a jaw's capsule
-bool needleAtJaws(const tools::Forceps& forceps, const Points& x, int swage, double reach) {
-  const std::array<double, 2> radii = halfRadii(forceps.def());
-  for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
-    for (int i = 0; i <= swage && i < x.cols(); ++i) {
-      const double t = collide::closestParameterOnSegment(x.col(i), jaw.tip, jaw.heel);
-      if ((x.col(i) - ((1.0 - t) * jaw.tip + t * jaw.heel)).norm() < std::max(radii[0], radii[1]) + reach) return true;
-    }
-  }
+bool needleAtJaws(const std::array<tools::JawCapsule, 2>& jaws, const Points& x, int swage, double reach) {
+  for (const tools::JawCapsule& jaw : jaws)
+    for (int i = 0; i <= swage && i < x.cols(); ++i)
+      if (fromAxis(x.col(i), jaw.tip, jaw.heel).first < jaw.heelRadius + reach) return true;
   return false;
 }
 
-
 // the held node and the chain on either side of it inside the jaws: first and last node
-std::array<int, 2> heldRun(const tools::Forceps& forceps, const Points& x, double threadRadius) {
-  const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
+std::array<int, 2> heldRun(const tools::Forceps& forceps, const std::array<tools::JawCapsule, 2>& jaws,
+                           const Points& x, double threadRadius) {
   const auto inside = [&](int i) {
     for (const tools::JawCapsule& c : jaws) {
-      const double t = collide::closestParameterOnSegment(x.col(i), c.tip, c.heel);
-      const double radius = c.tipRadius + t * (c.heelRadius - c.tipRadius) + threadRadius;
-      if ((x.col(i) - ((1.0 - t) * c.tip + t * c.heel)).norm() < radius) return true;
+      const auto [distance, t] = fromAxis(x.col(i), c.tip, c.heel);
+      if (distance < c.tipRadius + t * (c.heelRadius - c.tipRadius) + threadRadius) return true;
     }
     return false;
   };
@@ -89,22 +85,26 @@ std::array<int, 2> heldRun(const tools::Forceps& forceps, const Points& x, doubl
 
 void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
                               std::vector<suture::Capsule>& out) {
-  const std::array<double, 2> radii = halfRadii(forceps.def());
+  const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
+  const std::array<double, 2> radii = halfRadii(jaws[0]);
+  // what passes through: the held run while holding (capsules at full size), else nothing
+  // (capsules thinned to leave the thread between opened jaws clear)
+  std::array<int, 2> held{0, -1};
+  std::vector<Vec3> between;
   if (forceps.holdsSuture()) {
-    const std::array<int, 2> held = heldRun(forceps, x, threadRadius);
-    for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
-      const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
-      out.push_back({jaw.tip, middle, radii[0], held[0], held[1]});
-      out.push_back({middle, jaw.heel, radii[1], held[0], held[1]});
-    }
-    return;
+    held = heldRun(forceps, jaws, x, threadRadius);
+  } else {
+    if (!forceps.closed() && needleAtJaws(jaws, x, swage, kNeedleReach)) return;
+    between = threadBetweenJaws(forceps, radii, x);
   }
-  if (!forceps.closed() && needleAtJaws(forceps, x, swage, kNeedleReach)) return;
-  const std::vector<Vec3> between = threadBetweenJaws(forceps, x);
-  for (const tools::JawCapsule& jaw : tools::jawCapsules(forceps)) {
+  for (const tools::JawCapsule& jaw : jaws) {
     const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
-    out.push_back(clearOf(jaw.tip, middle, radii[0], between, threadRadius));
-    out.push_back(clearOf(middle, jaw.heel, radii[1], between, threadRadius));
+    for (suture::Capsule c : {clearOf(jaw.tip, middle, radii[0], between, threadRadius),
+                              clearOf(middle, jaw.heel, radii[1], between, threadRadius)}) {
+      c.freeFirst = held[0];
+      c.freeLast = held[1];
+      out.push_back(c);
+    }
   }
 }
 
