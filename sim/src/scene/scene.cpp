@@ -1,6 +1,7 @@
 #include "microsim/sim/scene/scene.h"
 
 #include "thread_jaw_obstacles.h"
+#include "collide/stale_contact.h"
 
 #include "microsim/sim/solve/state_hash.h"
 #include "microsim/sim/suture/suture_coupling.h"
@@ -505,6 +506,7 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
   // node near a placed jaw
   const std::size_t own = controls_.springs.size();
   std::vector<collide::TissueContactPair> pairs;
+  std::vector<std::size_t> pairTerm;  // per pair, its term in controls_.springs
   if (def_.contact.tissue) {
     // the tissue has not moved since the last look (most steps of an attempt): same pairs
     if (nearX_.cols() != state_.x.cols() ||
@@ -513,7 +515,10 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
       nearX_ = state_.x;
     }
     pairs = nearPairs_;
-    for (const auto& p : pairs) controls_.springs.push_back(contact_->spring(p, state_.x));
+    for (const auto& p : pairs) {
+      pairTerm.push_back(controls_.springs.size());
+      controls_.springs.push_back(contact_->spring(p, state_.x));
+    }
   }
   if (def_.contact.tools) {
     const std::vector<std::uint8_t> skip = jawSkip();
@@ -526,7 +531,8 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
   }
 
   // solve; a node carried into a face it had no term for adds one (normal and contact point
-  // taken from before the solve, when it was still outside) and the solve goes again
+  // taken from before the solve, when it was still outside), a term the face has swept away
+  // from is dropped (collide/stale_contact.h), and the solve goes again
   const Points before = state_.x;
   SolveReport total;
   for (int round = 0; round < kContactRounds; ++round) {
@@ -539,14 +545,22 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
     if (!def_.contact.tissue || round + 1 == kContactRounds) break;
     if (std::memcmp(before.data(), state_.x.data(), sizeof(double) * static_cast<std::size_t>(before.size())) == 0)
       break;  // nothing moved, nothing ran into anything
-    bool added = false;
+    bool changed = false;
+    for (const std::size_t term : pairTerm) {
+      PointSpring& sp = controls_.springs[term];
+      if (!collide::contactIsStale(sp, state_.x, def_.contact.params.reach)) continue;
+      sp.k = 0.0;  // let go, and kept in its place so that pairTerm stays true
+      changed = true;
+    }
+    // (a dropped pair stays in `pairs`: it is not taken again as a violation this step)
     for (const auto& v : contact_->violations(state_.x)) {
       if (std::find(pairs.begin(), pairs.end(), v) != pairs.end()) continue;
       pairs.push_back(v);
+      pairTerm.push_back(controls_.springs.size());
       controls_.springs.push_back(contact_->spring(v, before));
-      added = true;
+      changed = true;
     }
-    if (!added) break;
+    if (!changed) break;
   }
   for (std::size_t k = own; k < controls_.springs.size(); ++k) {
     const PointSpring& sp = controls_.springs[k];
