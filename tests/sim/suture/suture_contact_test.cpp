@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace microsim::sim::suture {
 namespace {
@@ -80,6 +81,30 @@ TEST(SutureContact, CapsuleFrictionHoldsSmallSlipAndLetsLargeSlipGo) {
 }
 
 class DrapeTest : public ::testing::TestWithParam<std::string> {};
+
+// Two strands touching right beside a node that cannot move (a pierce's): link 0 runs along
+// x from the held node 0, link 3 crosses it 0.05 mm from that node, 5 µm above it, held at
+// both ends. The only node that may move, node 1, carries a twentieth of the contact point:
+// pushing the point the full 15 µm out would send it 0.3 mm (a node beside a pierce was flung
+// so in a knot pulled tight); it moves no farther than the overlap, and away.
+TEST(SutureContact, AStrandPressedBesideAHeldNodeMovesItsFreeNodeNoFartherThanTheOverlap) {
+  Points x(3, 5);
+  x.col(0) = Vec3(0.0, 0.0, 0.0);
+  x.col(1) = Vec3(1.0, 0.0, 0.0);
+  x.col(2) = Vec3(1.0, 1.0, 0.5);
+  x.col(3) = Vec3(0.05, -0.5, 0.005);
+  x.col(4) = Vec3(0.05, 0.5, 0.005);
+  const Points start = x;
+  const std::vector<std::uint8_t> movable = {0, 1, 0, 0, 0};
+  const std::vector<std::uint8_t> alive(4, 1);
+  const double radius = 0.01;  // the strands keep 20 µm apart: 15 µm to go
+  SelfContact self(4);
+  ASSERT_EQ(self.project(x, start, radius, 0.0, 3, movable, alive), 1);
+  const Vec3 moved = x.col(1) - start.col(1);
+  EXPECT_LT(moved.z(), 0.0);  // away from the strand above
+  EXPECT_LE(moved.norm(), 0.015 + 1e-12);
+  EXPECT_GT(moved.norm(), 0.01);
+}
 
 TEST(SutureDrape, AStraightSutureDroppedOnACylinderDrapesAndComesToRest) {
   SutureModel m = threadOnlyModel(80, 6.0);
