@@ -126,7 +126,7 @@ TEST(StitchPhysics, DrawingTheThreadThroughWithoutAKnotLeavesTheWallsAndTheGap) 
 // thread breaks (an event) — with no link past the tear strain and nothing NaN, also while the
 // hands are then held still. (How far the walls are from rest then is recorded, not asserted:
 // past a wall stretch of about 0.48 the two ends fold into each other faster than the contact
-// rounds resolve, and they stay folded; README, "Known limits".)
+// rounds resolve, and they stay folded; README, the design's contact entry.)
 TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledBreaksOrTearsTheWall) {
   Scene scene(physicsScene());
   const Recording rec = physicsStitch();
