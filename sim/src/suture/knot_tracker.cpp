@@ -113,11 +113,24 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
     }
   }
 
-  // tension: tightened, or sliding while held
+  // where the knot has been these last steps: has it stopped running along the thread?
+  if (isTieableKnot(confirmed_)) {
+    places_.push_back(place(confirmed_));
+    if (static_cast<int>(places_.size()) > def_.seatSteps) {
+      places_.erase(places_.begin());
+    }
+  } else {
+    places_.clear();
+  }
+  const auto [nearest, farthest] = std::minmax_element(places_.begin(), places_.end());
+  const bool seated = !places_.empty() && static_cast<int>(places_.size()) >= def_.seatSteps &&
+                      *farthest - *nearest < def_.seatDistance;
+
+  // tension: tightened once seated, or sliding while held
   if (stretch < def_.tightStrain) {
     slipped_ = false;  // the ends let go: a slipped knot may be pulled tight again
   }
-  if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain) {
+  if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain && seated) {
     events_.push_back(knotEventOf(KnotEventKind::KnotTightened, step, confirmed_, tension));
     tight_ = Tight{place(confirmed_), tension};
   } else if (tight_ && isTieableKnot(confirmed_)) {

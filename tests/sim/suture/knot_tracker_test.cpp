@@ -111,6 +111,30 @@ TEST(KnotTracker, ThrowsSlidingWhileTheTensionRisesSlip) {
   EXPECT_LT(slipped[0].slide, 0.35);
 }
 
+// A half knot run down the strands to the wall under tension (the twist 0.5 mm up, coming down
+// 0.05 mm a step with the ends pulled to 0.3 %), then sitting there: it is being laid while it
+// runs, and tightened once it has stopped; it never slipped.
+TEST(KnotTracker, AThrowRunDownUnderTensionIsTightenedOnceItStops) {
+  KnotTracker tracker;
+  int step = 0;
+  for (int k = 10; k >= 0; --k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0, false, false, 0.05 * k);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  const int down = step - 1;  // the first step at the wall
+  for (int k = 0; k < 5; ++k, ++step) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0, false);
+    tracker.update(step, b.points(), b.anchors(), stretched(b, 0.003));
+  }
+  EXPECT_EQ(ofKind(tracker.events(), KnotEventKind::ThrowFormed).size(), 1U);
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotSlipped).empty());
+  const auto tight = ofKind(tracker.events(), KnotEventKind::KnotTightened);
+  ASSERT_EQ(tight.size(), 1U);
+  EXPECT_EQ(tight[0].step, down + KnotTrackerDef{}.seatSteps - 1);
+  EXPECT_EQ(tight[0].type, KnotType::SingleThrow);
+  EXPECT_TRUE(tracker.tightened());
+}
+
 TEST(KnotTracker, AKnotMovedAlongTheThreadWithItsEndsLetGoDoesNotSlip) {
   KnotTracker tracker;
   int step = tightenHalfKnot(tracker);

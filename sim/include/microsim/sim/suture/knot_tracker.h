@@ -15,8 +15,11 @@
 //  - ThrowFormed: the confirmed reading has more throws than before; one event per new throw.
 //  - KnotTightened: a confirmed knot with at least one throw, with the thread pulled to at least
 //    `tightStrain` (the largest link stretch: the strands pulled to tighten a knot carry the
-//    thread's highest tension). Its type, throws and tension (EA × stretch) are given, and the
-//    knot's place along the thread (the mean of its throws', as arc length from node 0) is kept.
+//    thread's highest tension), that has stopped running along the thread: its place (the mean
+//    of its throws', as arc length from node 0) has moved less than `seatDistance` over the last
+//    `seatSteps` steps. A throw is run down to the wall under tension; until it sits there it is
+//    being laid, not tightened, and its sliding is no slip. Its type, throws and tension (EA ×
+//    stretch) are given, and its place is kept.
 //  - KnotSlipped: a tightened knot that lost throws or its type (StructureLost), or whose place
 //    along the thread moved by more than `slipDistance` while the tension stayed at or above
 //    the tension it was tightened with (Sliding: the thread running through the knot). A slipped
@@ -42,6 +45,10 @@ struct KnotTrackerDef {
   /// EA of the thread (g·mm/s²): tension = EA × stretch. 10-0 nylon: EA/L ≈ 2.3e5 g/s² on 0.1 mm links
   double axialStiffness = 2.3e4;
   double slipDistance = 0.2;    ///< mm the knot may move along the thread while held tight
+  /// mm the knot may move along the thread over seatSteps steps and count as stopped (seated):
+  /// 0.02 mm in 3 steps at 100 Hz is under 0.7 mm/s, where a throw being run down moves mm/s
+  double seatDistance = 0.02;
+  int seatSteps = 3;
 };
 
 enum class KnotEventKind : std::uint8_t { ThrowFormed, KnotTightened, KnotSlipped };
@@ -95,6 +102,7 @@ class KnotTracker {
   KnotReading candidate_;
   int candidateCount_ = 0;
   std::optional<Tight> tight_;
+  std::vector<double> places_;      // the confirmed knot's place in the last seatSteps steps (mm)
   bool slipped_ = false;            // slipped, and the ends not let go since
   std::vector<double> arc_;         // arc length from node 0 to each node as last read (mm)
   std::vector<KnotEvent> events_;
