@@ -5,8 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace microsim::sim::collide {
+
+namespace {
+
+/// Links within which a face's corner makes it the node's own stretch of wall (tissue_contact.h).
+/// Two were not enough: released after a pull to a stretch of 0.56, the shipped vessel's wall
+/// snapped back onto faces three links along (a ring and a layer away), held there folded
+/// 1.3 mm from rest; with three it springs back to rest in one solve.
+constexpr int kOwnWallLinks = 3;
+
+}  // namespace
 
 double defaultContactStiffness(const SpringModel& tissue) {
   double kMax = 0.0;
@@ -29,6 +40,23 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
     }
   for (int i = 0; i < tissue.nodeCount(); ++i)
     if (onSurface[static_cast<std::size_t>(i)]) surfaceNodes_.push_back(i);
+
+  // each surface node's own stretch of wall: the nodes at most kOwnWallLinks links from it
+  ownWall_.resize(static_cast<std::size_t>(tissue.nodeCount()));
+  for (int i : surfaceNodes_) {
+    std::vector<int>& near = ownWall_[static_cast<std::size_t>(i)];
+    near.push_back(i);
+    std::size_t from = 0;
+    for (int hop = 0; hop < kOwnWallLinks; ++hop) {
+      const std::size_t to = near.size();
+      for (std::size_t k = from; k < to; ++k)
+        for (int li : tissue.linksOf(near[k])) near.push_back(tissue.otherEnd(li, near[k]));
+      from = to;
+      std::sort(near.begin() + static_cast<std::ptrdiff_t>(from), near.end());
+    }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+  }
   const double meanEdge = tissue.triangles().empty() ? 1.0 : edges / (3.0 * static_cast<double>(tissue.triangles().size()));
   cell_ = std::max({meanEdge, 2.0 * params.reach, 1e-6});
 }
@@ -71,6 +99,7 @@ void TissueContact::buildGrid(const Points& x) const {
 std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius) const {
   const Vec3 p = x.col(node);
   if (!p.allFinite()) return {-1, 0.0};
+  const std::vector<int>& wall = ownWall_[static_cast<std::size_t>(node)];
   const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
   const std::int64_t key = cellKey(c.x(), c.y(), c.z());
   const auto first = std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
@@ -90,7 +119,8 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
     if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
     bool eligible = true;
     for (int v : t)
-      if (v == node || (rest.col(v) - rest.col(node)).squaredNorm() < self2) eligible = false;
+      if ((rest.col(v) - rest.col(node)).squaredNorm() < self2 || std::binary_search(wall.begin(), wall.end(), v))
+        eligible = false;
     if (!eligible) continue;
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
     if (!(q.distance < radius)) continue;

@@ -123,11 +123,13 @@ TEST(StitchPhysics, DrawingTheThreadThroughWithoutAKnotLeavesTheWallsAndTheGap) 
 // The thread through both walls, its tail taken by the right forceps and the needle by the
 // left, which then pulls away: with both ends held the pull has nowhere to go but into the
 // walls and the thread, and whichever gives first gives — the wall tears (an event), or the
-// thread breaks (an event) — with no link past the tear strain and nothing NaN, also while the
-// hands are then held still. (How far the walls are from rest then is recorded, not asserted:
-// past a wall stretch of about 0.48 the two ends fold into each other faster than the contact
-// rounds resolve, and they stay folded; README, the design's contact entry.)
-TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledBreaksOrTearsTheWall) {
+// thread breaks (an event) — with no link past the tear strain and nothing NaN. Held still
+// after that, the walls settle: never farther from rest than the pull took them, and, when
+// the thread gave and the wall did not, back at rest. (Contact terms frozen at the start of
+// a solve once held a released wall bent and folded it further every step, to 1.9 mm; terms
+// between a buckled wall's own layers held it folded during the pull, 0.3 s a step;
+// collide/stale_contact.h, collide/tissue_contact.h.)
+TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledBreaksOrTearsTheWallAndTheWallsSettle) {
   Scene scene(physicsScene());
   const Recording rec = physicsStitch();
   for (const InputFrame& f : rec.frames) scene.step(f);
@@ -169,6 +171,8 @@ TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledBreaksOrTearsTheWall) {
     step(needle + 0.02 * (k - 1) * away, 1.0, 1.0);
     still = std::max(still, physicsLargestDisplacement(scene));
   }
+  EXPECT_LE(still, pulledTo);
+  if (physicsEvents(scene, SceneEventKind::TissueTear) == 0) EXPECT_LT(physicsLargestDisplacement(scene), 0.01);
   RecordProperty("pulled_to_mm", std::to_string(pulledTo));
   RecordProperty("held_still_max_mm", std::to_string(still));
 }

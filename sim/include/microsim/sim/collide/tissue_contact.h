@@ -9,11 +9,15 @@
 //   wound so that it points out of the wall), the term keeps n·(p − q) ≥ thickness. Both
 //   sides move (weights 1, −u, −v, −w).
 //
-// Which pairs may touch. A node and a face whose rest positions are within selfDistance
-// never collide: they are the same stretch of wall (the other layer of it, or a neighbour),
-// and what keeps them apart is the links. Everything farther apart at rest, within one body
-// or across bodies, may. So no body labels are needed, and a mesh with one lumen or ten is
-// treated alike.
+// Which pairs may touch. A node and a face never collide when a corner of the face lies within
+// selfDistance of the node at rest, or at most three links from it: they are the same stretch
+// of wall (the other layer of it, the next ring, however coarse the mesh), and what keeps
+// them apart is the links. (By rest distance alone, 0.3 mm, a wall pulled until it buckled
+// pressed its inner surface on its outer one a ring along, 0.5 mm apart at rest in the
+// shipped vessels, and those terms held it folded: solves at their iteration limit, 0.3 s a
+// step. A rest distance past the ring spacing would part the two cut ends, 0.5 mm apart.) Everything else, within one body or across bodies, may: the two
+// cut ends, 0.5 mm apart and joined by no link, and a wall against the opposite wall of its
+// lumen. So no body labels are needed, and a mesh with one lumen or ten is treated alike.
 //
 // When. The scene detects at the start of the tissue solve (every node within `reach` of a
 // face gets a term, pressed or not: one-sided terms cost nothing until pressed), solves, and
@@ -89,6 +93,7 @@ class TissueContact {
   double stiffness_ = 0.0;
   double cell_ = 1.0;
   std::vector<int> surfaceNodes_;
+  std::vector<std::vector<int>> ownWall_;  // per surface node: the nodes of its own stretch of wall, sorted
   // the grid, rebuilt for each query at its positions: (cell, face) sorted
   mutable std::vector<std::pair<std::int64_t, int>> grid_;
   mutable Points gridX_{3, 0};  ///< the positions the grid was built at
