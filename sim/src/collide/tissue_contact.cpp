@@ -41,22 +41,29 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
   for (int i = 0; i < tissue.nodeCount(); ++i)
     if (onSurface[static_cast<std::size_t>(i)]) surfaceNodes_.push_back(i);
 
-  // each surface node's own stretch of wall: the nodes at most kOwnWallLinks links from it
+  // each surface node's own stretch of wall: the nodes at most kOwnWallLinks links from it, by
+  // breadth-first layers (a node is taken once: `seen` holds the node it was taken for)
   ownWall_.resize(static_cast<std::size_t>(tissue.nodeCount()));
+  std::vector<int> seen(static_cast<std::size_t>(tissue.nodeCount()), -1);
   for (int i : surfaceNodes_) {
     std::vector<int>& near = ownWall_[static_cast<std::size_t>(i)];
     near.push_back(i);
+    seen[static_cast<std::size_t>(i)] = i;
     std::size_t from = 0;
     for (int hop = 0; hop < kOwnWallLinks; ++hop) {
       const std::size_t to = near.size();
       for (std::size_t k = from; k < to; ++k)
-        for (int li : tissue.linksOf(near[k])) near.push_back(tissue.otherEnd(li, near[k]));
+        for (int li : tissue.linksOf(near[k])) {
+          const int j = tissue.otherEnd(li, near[k]);
+          if (seen[static_cast<std::size_t>(j)] == i) continue;
+          seen[static_cast<std::size_t>(j)] = i;
+          near.push_back(j);
+        }
       from = to;
-      std::sort(near.begin() + static_cast<std::ptrdiff_t>(from), near.end());
     }
     std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
   }
+
   const double meanEdge = tissue.triangles().empty() ? 1.0 : edges / (3.0 * static_cast<double>(tissue.triangles().size()));
   cell_ = std::max({meanEdge, 2.0 * params.reach, 1e-6});
 }
