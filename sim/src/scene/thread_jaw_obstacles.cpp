@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -63,19 +64,45 @@ bool needleAtJaws(const std::array<tools::JawCapsule, 2>& jaws, const Points& x,
   return false;
 }
 
-// the held node and the chain on either side of it inside the jaws: first and last node
+// the two capsules a jaw becomes (header essay)
+std::array<suture::Capsule, 2> jawHalves(const tools::JawCapsule& jaw) {
+  const std::array<double, 2> radii = halfRadii(jaw);
+  const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
+  return {suture::Capsule{jaw.tip, middle, radii[0]}, suture::Capsule{middle, jaw.heel, radii[1]}};
+}
+
+// the held node and the chain on either side of it inside the jaws: first and last node. A
+// node inside the tapered jaw is inside; so is one nearer the held point than the rim of the
+// capsule the thread meets there (jawHalves, thicker than the jaw near its tip). Before, a
+// node 0.1 mm from a grip at the tip lay outside the jaw but inside the capsule, was pushed out
+// to its rim on every other step while the held node stayed, and the links beside the grip
+// stood 58 % over length, which read as a knot pulled tight. Turns wound round the jaws lie
+// farther from the held point than that, and stay solid to them.
 std::array<int, 2> heldRun(const tools::Forceps& forceps, const std::array<tools::JawCapsule, 2>& jaws,
                            const Points& x, double threadRadius) {
+  const int last = static_cast<int>(x.cols()) - 1;
+  int first = forceps.heldSutureNode();
+  const double fraction = forceps.heldSutureFraction();
+  int end = std::min(fraction > 0.0 ? first + 1 : first, last);
+  const Vec3 held = (1.0 - fraction) * x.col(first) + fraction * x.col(end);
+  double reach = 0.0;  // the rim of the capsule nearest the held point
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const tools::JawCapsule& jaw : jaws)
+    for (const suture::Capsule& c : jawHalves(jaw)) {
+      const double d = fromAxis(held, c.a, c.b).first - c.radius;
+      if (d < nearest) {
+        nearest = d;
+        reach = c.radius + threadRadius;
+      }
+    }
   const auto inside = [&](int i) {
+    if ((x.col(i) - held).norm() < reach) return true;
     for (const tools::JawCapsule& c : jaws) {
       const auto [distance, t] = fromAxis(x.col(i), c.tip, c.heel);
       if (distance < c.tipRadius + t * (c.heelRadius - c.tipRadius) + threadRadius) return true;
     }
     return false;
   };
-  const int last = static_cast<int>(x.cols()) - 1;
-  int first = forceps.heldSutureNode();
-  int end = std::min(forceps.heldSutureFraction() > 0.0 ? first + 1 : first, last);
   while (first > 0 && inside(first - 1)) --first;
   while (end < last && inside(end + 1)) ++end;
   return {first, end};
@@ -86,7 +113,6 @@ std::array<int, 2> heldRun(const tools::Forceps& forceps, const std::array<tools
 void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
                               std::vector<suture::Capsule>& out) {
   const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
-  const std::array<double, 2> radii = halfRadii(jaws[0]);
   // what passes through: the held run while holding (capsules at full size), else nothing
   // (capsules thinned to leave the thread between opened jaws clear)
   std::array<int, 2> held{0, -1};
@@ -95,12 +121,11 @@ void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, in
     held = heldRun(forceps, jaws, x, threadRadius);
   } else {
     if (!forceps.closed() && needleAtJaws(jaws, x, swage, kNeedleReach)) return;
-    between = threadBetweenJaws(forceps, radii, x);
+    between = threadBetweenJaws(forceps, halfRadii(jaws[0]), x);
   }
   for (const tools::JawCapsule& jaw : jaws) {
-    const Vec3 middle = 0.5 * (jaw.tip + jaw.heel);
-    for (suture::Capsule c : {clearOf(jaw.tip, middle, radii[0], between, threadRadius),
-                              clearOf(middle, jaw.heel, radii[1], between, threadRadius)}) {
+    for (const suture::Capsule& half : jawHalves(jaw)) {
+      suture::Capsule c = clearOf(half.a, half.b, half.radius, between, threadRadius);
       c.freeFirst = held[0];
       c.freeLast = held[1];
       out.push_back(c);
