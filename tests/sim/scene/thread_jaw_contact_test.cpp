@@ -195,6 +195,17 @@ TEST(ThreadJawContact, TurnsWoundOnTheJawsStayOnThemWhileTheyOpen) {
   EXPECT_TRUE(scene.sutureState()->x.allFinite());
 }
 
+/// Frame `k` of a thread held at both places from the third frame: the left forceps along its
+/// end, the right upright across node `node` and carried by `carry` (mm).
+InputFrame endAndAcrossFrame(const Points& start, int k, int node, const Vec3& carry) {
+  InputFrame f;
+  f.time = 0.01 * (k + 1);
+  f.hand(Hand::Left) = testing::forcepsOnThreadEnd(start, 0, 1, k < 2 ? 0.0 : 1.0);
+  f.hand(Hand::Right) = testing::forcepsAcrossThread(start, node, k < 2 ? 0.0 : 1.0);
+  f.hand(Hand::Right).position += carry;
+  return f;
+}
+
 // Jaws that hold the thread are solid to the rest of it (issue 19, item 1: the thread does not
 // pass through the jaws): a hairpin, strand A along x at y = 0, turned round at x = 2.5 and
 // back along x at y = 0.6 and 0.5 mm lower (strand B). The left forceps holds A's free end; the right forceps,
@@ -229,12 +240,7 @@ TEST(ThreadJawContact, JawsHoldingTheThreadPushTheRestOfItAhead) {
     if ((start.col(i) - Vec3(0.0, 0.6, 12.0)).norm() < (start.col(middle) - Vec3(0.0, 0.6, 12.0)).norm()) middle = i;
   double clearance = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 130; ++k) {
-    InputFrame f;
-    f.time = 0.01 * (k + 1);
-    f.hand(Hand::Left) = testing::forcepsOnThreadEnd(start, 0, 1, k < 2 ? 0.0 : 1.0);
-    f.hand(Hand::Right) = testing::forcepsAcrossThread(start, middle, k < 2 ? 0.0 : 1.0);
-    f.hand(Hand::Right).position.y() -= 0.01 * std::clamp(k - 20, 0, 100);
-    scene.step(f);
+    scene.step(endAndAcrossFrame(start, k, middle, Vec3(0.0, -0.01 * std::clamp(k - 20, 0, 100), 0.0)));
     // strand A's links against the right jaws
     const Points& x = scene.sutureState()->x;
     for (const tools::JawCapsule& jaw : tools::jawCapsules(*scene.forceps(Hand::Right)))
@@ -265,12 +271,7 @@ TEST(ThreadJawContact, TheThreadBesideAGripAcrossItKeepsItsLength) {
   const int middle = kJawThreadLinks / 2;
   double stretch = 0.0;
   for (int k = 0; k < 60; ++k) {
-    InputFrame f;
-    f.time = 0.01 * (k + 1);
-    f.hand(Hand::Left) = testing::forcepsOnThreadEnd(start, 0, 1, k < 2 ? 0.0 : 1.0);
-    f.hand(Hand::Right) = testing::forcepsAcrossThread(start, middle, k < 2 ? 0.0 : 1.0);
-    f.hand(Hand::Right).position.x() -= 0.01 * std::clamp(k - 10, 0, 50);
-    scene.step(f);
+    scene.step(endAndAcrossFrame(start, k, middle, Vec3(-0.01 * std::clamp(k - 10, 0, 50), 0.0, 0.0)));
     const std::vector<double> s = suture::linkStretches(*scene.sutureModel(), *scene.sutureState());
     stretch = std::max(stretch, *std::max_element(s.begin(), s.end()));
   }
