@@ -172,7 +172,9 @@ TEST(StitchPhysics, AThreadHeldAtBothEndsAndPulledBreaksOrTearsTheWallAndTheWall
     still = std::max(still, physicsLargestDisplacement(scene));
   }
   EXPECT_LE(still, pulledTo);
-  if (physicsEvents(scene, SceneEventKind::TissueTear) == 0) EXPECT_LT(physicsLargestDisplacement(scene), 0.01);
+  if (physicsEvents(scene, SceneEventKind::TissueTear) == 0) {
+    EXPECT_LT(physicsLargestDisplacement(scene), 0.01);
+  }
   RecordProperty("pulled_to_mm", std::to_string(pulledTo));
   RecordProperty("held_still_max_mm", std::to_string(still));
 }
