@@ -42,12 +42,28 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
     if (onSurface[static_cast<std::size_t>(i)]) surfaceNodes_.push_back(i);
 
   // each surface node's own stretch of wall: the nodes at most kOwnWallLinks links from it, by
-  // breadth-first layers (a node is taken once: `seen` holds the node it was taken for)
-  ownWall_.resize(static_cast<std::size_t>(tissue.nodeCount()));
+  // breadth-first layers (a node is taken once: `seen` holds the node it was taken for), and
+  // the nodes within selfDistance of it at rest; the faces with a corner among them are the
+  // ones it never meets
+  const double self = params.selfDistance;
+  std::vector<std::pair<std::int64_t, int>> restGrid;  // (cell, node), cells of selfDistance
+  const auto restCell = [&](const Vec3& p) -> Eigen::Vector3i { return (p / self).array().floor().cast<int>(); };
+  if (self > 0.0) {
+    for (int i = 0; i < tissue.nodeCount(); ++i) {
+      const Eigen::Vector3i c = restCell(rest.col(i));
+      restGrid.emplace_back(cellKey(c.x(), c.y(), c.z()), i);
+    }
+    std::sort(restGrid.begin(), restGrid.end());
+  }
+  std::vector<std::vector<int>> facesOf(static_cast<std::size_t>(tissue.nodeCount()));
+  for (int f = 0; f < static_cast<int>(tissue.triangles().size()); ++f)
+    for (int v : tissue.triangles()[static_cast<std::size_t>(f)]) facesOf[static_cast<std::size_t>(v)].push_back(f);
+  ownFaces_.resize(static_cast<std::size_t>(tissue.nodeCount()));
   std::vector<int> seen(static_cast<std::size_t>(tissue.nodeCount()), -1);
+  std::vector<int> faceSeen(tissue.triangles().size(), -1);
+  std::vector<int> near;
   for (int i : surfaceNodes_) {
-    std::vector<int>& near = ownWall_[static_cast<std::size_t>(i)];
-    near.push_back(i);
+    near.assign(1, i);
     seen[static_cast<std::size_t>(i)] = i;
     std::size_t from = 0;
     for (int hop = 0; hop < kOwnWallLinks; ++hop) {
@@ -61,7 +77,30 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
         }
       from = to;
     }
-    std::sort(near.begin(), near.end());
+    if (self > 0.0) {
+      const Eigen::Vector3i c = restCell(rest.col(i));
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            const std::int64_t key = cellKey(c.x() + dx, c.y() + dy, c.z() + dz);
+            for (auto it = std::lower_bound(restGrid.begin(), restGrid.end(), std::pair<std::int64_t, int>(key, -1));
+                 it != restGrid.end() && it->first == key; ++it) {
+              const int j = it->second;
+              if (seen[static_cast<std::size_t>(j)] != i && (rest.col(j) - rest.col(i)).squaredNorm() < self * self) {
+                seen[static_cast<std::size_t>(j)] = i;
+                near.push_back(j);
+              }
+            }
+          }
+    }
+    std::vector<int>& faces = ownFaces_[static_cast<std::size_t>(i)];
+    for (int j : near)
+      for (int f : facesOf[static_cast<std::size_t>(j)])
+        if (faceSeen[static_cast<std::size_t>(f)] != i) {
+          faceSeen[static_cast<std::size_t>(f)] = i;
+          faces.push_back(f);
+        }
+    std::sort(faces.begin(), faces.end());
   }
 
   const double meanEdge = tissue.triangles().empty() ? 1.0 : edges / (3.0 * static_cast<double>(tissue.triangles().size()));
@@ -106,29 +145,22 @@ void TissueContact::buildGrid(const Points& x) const {
 std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius) const {
   const Vec3 p = x.col(node);
   if (!p.allFinite()) return {-1, 0.0};
-  const std::vector<int>& wall = ownWall_[static_cast<std::size_t>(node)];
+  const std::vector<int>& own = ownFaces_[static_cast<std::size_t>(node)];
   const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
   const std::int64_t key = cellKey(c.x(), c.y(), c.z());
   const auto first = std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
-  const auto rest = tissue_.restPositions();
-  const double self2 = params_.selfDistance * params_.selfDistance;
   int best = -1;
   double bestScore = std::numeric_limits<double>::infinity();
   double bestSigned = 0.0;
   for (auto it = first; it != grid_.end() && it->first == key; ++it) {
     const int f = it->second;
-    const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
     // a face whose box, grown by the radius, misses the node is farther than the radius
     // along one axis: most of a cell's faces (their boxes were grown by reach + slack) go
-    // here, before the dearer rest-distance and closest-point tests
-    const Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - radius;
-    const Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + radius;
-    if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
-    bool eligible = true;
-    for (int v : t)
-      if ((rest.col(v) - rest.col(node)).squaredNorm() < self2 || std::binary_search(wall.begin(), wall.end(), v))
-        eligible = false;
-    if (!eligible) continue;
+    // here, before the dearer eligibility and closest-point tests
+    if ((p.array() < faceLow_.col(f).array() - radius).any() || (p.array() > faceHigh_.col(f).array() + radius).any())
+      continue;
+    if (std::binary_search(own.begin(), own.end(), f)) continue;
+    const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
     if (!(q.distance < radius)) continue;
     const Vec3 normal = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).normalized();
@@ -147,8 +179,18 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
 
 std::vector<TissueContactPair> TissueContact::pairsCloserThan(const Points& x, double signedDistance) const {
   std::vector<TissueContactPair> pairs;
-  if (tissue_.triangles().empty()) return pairs;
+  const auto& triangles = tissue_.triangles();
+  if (triangles.empty()) return pairs;
   buildGrid(x);
+  // every face's box at these positions, once for all the nodes that look at it
+  faceLow_.resize(3, static_cast<Eigen::Index>(triangles.size()));
+  faceHigh_.resize(3, static_cast<Eigen::Index>(triangles.size()));
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    const auto& t = triangles[f];
+    const auto column = static_cast<Eigen::Index>(f);
+    faceLow_.col(column) = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2]));
+    faceHigh_.col(column) = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2]));
+  }
   for (int i : surfaceNodes_) {
     const auto [face, distance] = closestFace(x, i, params_.reach);
     if (face >= 0 && distance < signedDistance) pairs.push_back({i, face});

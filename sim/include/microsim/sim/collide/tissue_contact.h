@@ -15,9 +15,10 @@
 // them apart is the links. (By rest distance alone, 0.3 mm, a wall pulled until it buckled
 // pressed its inner surface on its outer one a ring along, 0.5 mm apart at rest in the
 // shipped vessels, and those terms held it folded: solves at their iteration limit, 0.3 s a
-// step. A rest distance past the ring spacing would part the two cut ends, 0.5 mm apart.) Everything else, within one body or across bodies, may: the two
-// cut ends, 0.5 mm apart and joined by no link, and a wall against the opposite wall of its
-// lumen. So no body labels are needed, and a mesh with one lumen or ten is treated alike.
+// step. A rest distance past the ring spacing would part the two cut ends, 0.5 mm apart.)
+// Everything else, within one body or across bodies, may: the two cut ends, 0.5 mm apart and
+// joined by no link, and a wall against the opposite wall of its lumen. So no body labels are
+// needed, and a mesh with one lumen or ten is treated alike.
 //
 // When. The scene detects at the start of the tissue solve (every node within `reach` of a
 // face gets a term, pressed or not: one-sided terms cost nothing until pressed), solves, and
@@ -28,8 +29,12 @@
 // largest of the mean edge and 2·reach), as a sorted list of (cell, face): O(F log F) to build
 // for F faces. It is rebuilt only once some node has moved more than slack/2 since it was
 // built: until then a node within reach of a face still lies in that face's grown box (each
-// has moved at most slack/2). A query is O(N log F) for N surface nodes. The scene looks
-// again only when the tissue has moved.
+// has moved at most slack/2). A query is O(N log F) for N surface nodes. The faces each node
+// never meets are listed once, at construction (a node's own stretch of wall is three links
+// deep, so the rule is one look-up a face instead of six), and the faces' boxes are taken once
+// a query, not once for every node that looks at them: over the shipped stitch's replay the
+// contact queries went from 1.26 G instructions (27 % of the whole) to 0.70 G (callgrind),
+// with the same pairs. The scene looks again only when the tissue has moved.
 //
 // Units: mm, stiffness g/s².
 
@@ -93,7 +98,10 @@ class TissueContact {
   double stiffness_ = 0.0;
   double cell_ = 1.0;
   std::vector<int> surfaceNodes_;
-  std::vector<std::vector<int>> ownWall_;  // per surface node: the nodes of its own stretch of wall, sorted
+  std::vector<std::vector<int>> ownFaces_;  // per surface node: the faces it never meets, sorted
+  // per face, the box of its corners at the positions of the query running (3 by F)
+  mutable Points faceLow_{3, 0};
+  mutable Points faceHigh_{3, 0};
   // the grid, rebuilt for each query at its positions: (cell, face) sorted
   mutable std::vector<std::pair<std::int64_t, int>> grid_;
   mutable Points gridX_{3, 0};  ///< the positions the grid was built at
