@@ -1,8 +1,9 @@
 #pragma once
-// A scene whose thread is tied in a surgeon's knot, and the hands that pull it tight: the
-// shipped scene with its needle's suture replaced by a thread (no needle) laid in the analytic
-// surgeon's knot of the recogniser's tests (bench/knot_geometry.h: a left double throw, then a
-// right single, scaled to a quarter, 300 equal links) 12 mm above the vessel. The forceps take
+// A scene whose thread is tied in a knot, and the hands that pull it tight: the shipped scene
+// with its needle's suture replaced by a thread (no needle) laid in an analytic knot of the
+// recogniser's tests (bench/knot_geometry.h's throws in a row; the surgeon's knot is a left
+// double throw, then a right single), scaled to a quarter, 300 equal links, 12 mm above the
+// vessel. The forceps take
 // the two ends (upright, closing across the thread's third node from each end from the third
 // frame: jaws laid along the thread would lie on the knot, and jaws are solid to it) and,
 // from the sixth, pull them apart 0.01 mm a frame each along the line between them. Shared by
@@ -13,21 +14,24 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 namespace microsim::testing {
 
 inline constexpr int kKnotSceneLinks = 300;
 
-/// The scene described above (the shipped scene read from `sourceRoot`); nullopt when the
-/// shipped scene does not load.
-inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sourceRoot) {
+/// The scene described above with its thread tied in `throws` (each: its wraps and whether it
+/// is right-handed, knot_geometry.h's throwsInARow) instead; nullopt when the shipped scene
+/// does not load.
+inline std::optional<sim::SceneDef> knotSceneDef(const std::string& sourceRoot,
+                                                 const std::vector<std::pair<int, bool>>& throws) {
   sim::SceneDefLoad load = sim::loadSceneDef(sourceRoot + "/resources/scenes/anastomosis.json");
   if (!std::holds_alternative<sim::SceneDef>(load)) return std::nullopt;
   sim::SceneDef def = std::get<sim::SceneDef>(std::move(load));
   namespace kt = sim::suture::knot_test;
-  sim::Points x =
-      kt::evenlySpaced(kt::throwsInARow({{2, false}, {1, true}}).points(), 0.25, kKnotSceneLinks);
+  sim::Points x = kt::evenlySpaced(kt::throwsInARow(throws).points(), 0.25, kKnotSceneLinks);
   x.colwise() += sim::Vec3(0.0, 0.0, 12.0) - x.col(0);
   sim::NeedleDef& needle = *def.needle;
   needle.suture.needleLinks = 0;
@@ -35,6 +39,12 @@ inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sour
   needle.suture.length = kt::polylineLength(x);
   needle.initialShape = x;
   return def;
+}
+
+/// The scene described above (the shipped scene read from `sourceRoot`); nullopt when the
+/// shipped scene does not load.
+inline std::optional<sim::SceneDef> surgeonsKnotSceneDef(const std::string& sourceRoot) {
+  return knotSceneDef(sourceRoot, {{2, false}, {1, true}});
 }
 
 /// A forceps whose jaws lie along the thread's end at node `end` (`inward` = +1 when the
