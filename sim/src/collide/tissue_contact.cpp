@@ -47,7 +47,9 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
   // ones it never meets
   const double self = params.selfDistance;
   std::vector<std::pair<std::int64_t, int>> restGrid;  // (cell, node), cells of selfDistance
-  const auto restCell = [&](const Vec3& p) -> Eigen::Vector3i { return (p / self).array().floor().cast<int>(); };
+  const auto restCell = [&](const Vec3& p) -> Eigen::Vector3i {
+    return (p / self).array().floor().cast<int>();
+  };
   if (self > 0.0) {
     for (int i = 0; i < tissue.nodeCount(); ++i) {
       const Eigen::Vector3i c = restCell(rest.col(i));
@@ -57,7 +59,8 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
   }
   std::vector<std::vector<int>> facesOf(static_cast<std::size_t>(tissue.nodeCount()));
   for (int f = 0; f < static_cast<int>(tissue.triangles().size()); ++f)
-    for (int v : tissue.triangles()[static_cast<std::size_t>(f)]) facesOf[static_cast<std::size_t>(v)].push_back(f);
+    for (int v : tissue.triangles()[static_cast<std::size_t>(f)])
+      facesOf[static_cast<std::size_t>(v)].push_back(f);
   ownFaces_.resize(static_cast<std::size_t>(tissue.nodeCount()));
   std::vector<int> seen(static_cast<std::size_t>(tissue.nodeCount()), -1);
   std::vector<int> faceSeen(tissue.triangles().size(), -1);
@@ -83,10 +86,12 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
         for (int dy = -1; dy <= 1; ++dy)
           for (int dz = -1; dz <= 1; ++dz) {
             const std::int64_t key = cellKey(c.x() + dx, c.y() + dy, c.z() + dz);
-            for (auto it = std::lower_bound(restGrid.begin(), restGrid.end(), std::pair<std::int64_t, int>(key, -1));
+            for (auto it = std::lower_bound(restGrid.begin(), restGrid.end(),
+                                            std::pair<std::int64_t, int>(key, -1));
                  it != restGrid.end() && it->first == key; ++it) {
               const int j = it->second;
-              if (seen[static_cast<std::size_t>(j)] != i && (rest.col(j) - rest.col(i)).squaredNorm() < self * self) {
+              if (seen[static_cast<std::size_t>(j)] != i &&
+                  (rest.col(j) - rest.col(i)).squaredNorm() < self * self) {
                 seen[static_cast<std::size_t>(j)] = i;
                 near.push_back(j);
               }
@@ -148,7 +153,8 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   const std::vector<int>& own = ownFaces_[static_cast<std::size_t>(node)];
   const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
   const std::int64_t key = cellKey(c.x(), c.y(), c.z());
-  const auto first = std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
+  const auto first =
+      std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
   int best = -1;
   double bestScore = std::numeric_limits<double>::infinity();
   double bestSigned = 0.0;
@@ -157,7 +163,8 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
     // a face whose box, grown by the radius, misses the node is farther than the radius
     // along one axis: most of a cell's faces (their boxes were grown by reach + slack) go
     // here, before the dearer eligibility and closest-point tests
-    if ((p.array() < faceLow_.col(f).array() - radius).any() || (p.array() > faceHigh_.col(f).array() + radius).any())
+    if ((p.array() < faceLow_.col(f).array() - radius).any() ||
+        (p.array() > faceHigh_.col(f).array() + radius).any())
       continue;
     if (std::binary_search(own.begin(), own.end(), f)) continue;
     const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];

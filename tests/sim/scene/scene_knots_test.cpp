@@ -109,9 +109,10 @@ TEST(SceneKnots, TightenedKnotsHeldUnderLoadKeepTheirThrows) {
     std::vector<std::pair<int, bool>> throws;
     suture::KnotType type;
   };
-  const std::vector<Case> cases = {{"square", {{1, false}, {1, true}}, suture::KnotType::Square},
-                                   {"granny", {{1, false}, {1, false}}, suture::KnotType::Granny},
-                                   {"surgeon's", {{2, false}, {1, true}}, suture::KnotType::Surgeons}};
+  const std::vector<Case> cases = {
+      {"square", {{1, false}, {1, true}}, suture::KnotType::Square},
+      {"granny", {{1, false}, {1, false}}, suture::KnotType::Granny},
+      {"surgeon's", {{2, false}, {1, true}}, suture::KnotType::Surgeons}};
   constexpr double kLoadStretch = 0.02;
   for (const Case& c : cases) {
     const std::optional<SceneDef> def = testing::knotSceneDef(kKnotSceneRoot, c.throws);
@@ -124,12 +125,15 @@ TEST(SceneKnots, TightenedKnotsHeldUnderLoadKeepTheirThrows) {
     double closest = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 400 && (loadedAt < 0 || k < loadedAt + 60); ++k) {
       scene.step(testing::knotPullFrame(start, loadedAt < 0 ? k : loadedAt));
-      if (loadedAt >= 0 && k % 5 == 0) closest = std::min(closest, closestStrands(scene.sutureState()->x));
-      const std::vector<double> s = suture::linkStretches(*scene.sutureModel(), *scene.sutureState());
+      if (loadedAt >= 0 && k % 5 == 0)
+        closest = std::min(closest, closestStrands(scene.sutureState()->x));
+      const std::vector<double> s =
+          suture::linkStretches(*scene.sutureModel(), *scene.sutureState());
       if (loadedAt < 0 && !knotEventsOf(scene, SceneEventKind::KnotTightened).empty() &&
           *std::max_element(s.begin(), s.end()) >= kLoadStretch) {
         loadedAt = k;
-        for (const suture::KnotThrow& t : scene.knots()->reading().throws) placeLoaded += 0.5 * t.position;
+        for (const suture::KnotThrow& t : scene.knots()->reading().throws)
+          placeLoaded += 0.5 * t.position;
       }
     }
     ASSERT_GE(loadedAt, 0) << c.name << ": never tightened under load";

@@ -240,7 +240,8 @@ TEST(ThreadJawContact, JawsHoldingTheThreadPushTheRestOfItAhead) {
     if ((start.col(i) - Vec3(0.0, 0.6, 12.0)).norm() < (start.col(middle) - Vec3(0.0, 0.6, 12.0)).norm()) middle = i;
   double clearance = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 130; ++k) {
-    scene.step(endAndAcrossFrame(start, k, middle, Vec3(0.0, -0.01 * std::clamp(k - 20, 0, 100), 0.0)));
+    scene.step(
+        endAndAcrossFrame(start, k, middle, Vec3(0.0, -0.01 * std::clamp(k - 20, 0, 100), 0.0)));
     // strand A's links against the right jaws
     const Points& x = scene.sutureState()->x;
     for (const tools::JawCapsule& jaw : tools::jawCapsules(*scene.forceps(Hand::Right)))
@@ -271,7 +272,8 @@ TEST(ThreadJawContact, TheThreadBesideAGripAcrossItKeepsItsLength) {
   const int middle = kJawThreadLinks / 2;
   double stretch = 0.0;
   for (int k = 0; k < 60; ++k) {
-    scene.step(endAndAcrossFrame(start, k, middle, Vec3(-0.01 * std::clamp(k - 10, 0, 50), 0.0, 0.0)));
+    scene.step(
+        endAndAcrossFrame(start, k, middle, Vec3(-0.01 * std::clamp(k - 10, 0, 50), 0.0, 0.0)));
     const std::vector<double> s = suture::linkStretches(*scene.sutureModel(), *scene.sutureState());
     stretch = std::max(stretch, *std::max_element(s.begin(), s.end()));
   }
