@@ -122,7 +122,7 @@ MainWindow::MainWindow(assessment::HistoryDatabase* history, const assessment::D
   });
 
   QSettings settings;
-  restoreGeometry(settings.value(settings::windowGeometry()).toByteArray());
+  if (!restoreGeometry(settings.value(settings::windowGeometry()).toByteArray())) placeFirstTime(*this);
   restoreState(settings.value(settings::windowState()).toByteArray());
   fitToScreen(*this);
 }

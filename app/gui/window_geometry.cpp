@@ -35,4 +35,20 @@ void fitToScreen(QWidget& window) {
   window.setGeometry(fitted.marginsRemoved(decoration));
 }
 
+QRect firstPlacement(const QRect& available, const QSize& minimum) {
+  const QSize most(1600, 1000);
+  QSize size(static_cast<int>(0.85 * available.width()), static_cast<int>(0.85 * available.height()));
+  size = size.boundedTo(most).expandedTo(minimum).boundedTo(available.size());
+  QRect placed(QPoint(0, 0), size);
+  placed.moveCenter(available.center());
+  return placed;
+}
+
+void placeFirstTime(QWidget& window) {
+  QScreen* screen = window.screen();
+  if (!screen) screen = QGuiApplication::primaryScreen();
+  if (!screen) return;
+  window.setGeometry(firstPlacement(screen->availableGeometry(), window.minimumSizeHint()));
+}
+
 }  // namespace microsim::gui

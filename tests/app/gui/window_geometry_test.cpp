@@ -12,6 +12,7 @@
 #include <QGuiApplication>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QScreen>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -20,6 +21,8 @@
 #include "app/gui/core_profile.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace microsim::gui {
 namespace {
@@ -36,6 +39,18 @@ TEST(FitInside, ShrinksAndMovesOntoTheAvailableArea) {
   EXPECT_EQ(fitInside(QRect(-50, -40, 2000, 1000), QRect(0, 30, 1280, 770)), QRect(0, 30, 1280, 770));
   // a second screen to the right, its own origin
   EXPECT_EQ(fitInside(QRect(1300, 0, 1000, 1200), QRect(1280, 0, 1920, 1050)), QRect(1300, 0, 1000, 1050));
+}
+
+TEST(FirstPlacement, MostOfTheScreenCentredWithinBounds) {
+  // 85 % each way, centred
+  EXPECT_EQ(firstPlacement(QRect(0, 0, 1280, 800), QSize(400, 300)), QRect(96, 60, 1088, 680));
+  // a large screen: at most 1600 by 1000
+  EXPECT_EQ(firstPlacement(QRect(0, 0, 3840, 2160), QSize(400, 300)), QRect(1120, 580, 1600, 1000));
+  // a small one: at least the window's minimum, never past the area
+  EXPECT_EQ(firstPlacement(QRect(0, 30, 800, 570), QSize(720, 560)), QRect(40, 35, 720, 560));
+  EXPECT_EQ(firstPlacement(QRect(0, 0, 640, 480), QSize(720, 560)), QRect(0, 0, 640, 480));
+  // a second screen's area, its own origin
+  EXPECT_EQ(firstPlacement(QRect(1280, 0, 1920, 1080), QSize(400, 300)).center(), QRect(1280, 0, 1920, 1080).center());
 }
 
 struct WindowHistory {
@@ -78,6 +93,26 @@ TEST(WindowGeometry, ASavedGeometryLargerThanTheScreenIsFittedToIt) {
   auto* signIn = window.findChild<QPushButton*>(QStringLiteral("signInButton"));
   ASSERT_NE(signIn, nullptr);
   EXPECT_TRUE(available.contains(QRect(signIn->mapToGlobal(QPoint(0, 0)), signIn->size())));
+}
+
+// The first start: nothing saved, the window opens on most of the screen, and the sign-in
+// page fits it with no scroll bar (it opened at 466 by 348 behind two).
+TEST(WindowGeometry, WithNothingSavedTheWindowOpensOnMostOfTheScreen) {
+  WindowHistory h;
+  QScreen* screen = QGuiApplication::primaryScreen();
+  ASSERT_NE(screen, nullptr);
+  const QRect available = screen->availableGeometry();
+  MainWindow window(&h.history, {}, h.path);
+  window.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+  EXPECT_TRUE(available.contains(window.frameGeometry()));
+  EXPECT_GE(window.width(), 0.8 * std::min(available.width(), 1600));
+  EXPECT_GE(window.height(), 0.8 * std::min(available.height(), 1000));
+  for (const QScrollBar* bar : window.findChildren<QScrollBar*>())
+    EXPECT_FALSE(bar->isVisible()) << "a scroll bar on the first page";
+  auto* signIn = window.findChild<QPushButton*>(QStringLiteral("signInButton"));
+  ASSERT_NE(signIn, nullptr);
+  EXPECT_TRUE(signIn->isVisible());
 }
 
 TEST(WindowGeometry, TheReviewPageDoesNotGrowTheWindow) {
