@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace microsim::sim::collide {
@@ -16,6 +18,84 @@ namespace {
 /// snapped back onto faces three links along (a ring and a layer away), held there folded
 /// 1.3 mm from rest; with three it springs back to rest in one solve.
 constexpr int kOwnWallLinks = 3;
+
+// a grid cell's key: 21 bits a coordinate, cells of ≥ 1 µm over ±1 m
+std::int64_t packCell(const Eigen::Vector3i& c) {
+  const auto b = [](int v) { return static_cast<std::int64_t>(v) & 0x1FFFFF; };
+  return (b(c.x()) << 42) | (b(c.y()) << 21) | b(c.z());
+}
+
+// every node's faces
+std::vector<std::vector<int>> facesOfNodes(const SpringModel& tissue) {
+  std::vector<std::vector<int>> facesOf(static_cast<std::size_t>(tissue.nodeCount()));
+  for (int f = 0; f < static_cast<int>(tissue.triangles().size()); ++f)
+    for (int v : tissue.triangles()[static_cast<std::size_t>(f)])
+      facesOf[static_cast<std::size_t>(v)].push_back(f);
+  return facesOf;
+}
+
+// Appends to `near` the nodes at most kOwnWallLinks links from node i, by breadth-first
+// layers, and marks them in `seen` (seen[j] == i: taken for i), i itself first.
+void appendOwnWall(const SpringModel& tissue, int i, std::vector<int>& seen,
+                   std::vector<int>& near) {
+  near.push_back(i);
+  seen[static_cast<std::size_t>(i)] = i;
+  std::size_t from = near.size() - 1;
+  for (int hop = 0; hop < kOwnWallLinks; ++hop) {
+    const std::size_t to = near.size();
+    for (std::size_t k = from; k < to; ++k)
+      for (int li : tissue.linksOf(near[k])) {
+        const int j = tissue.otherEnd(li, near[k]);
+        if (seen[static_cast<std::size_t>(j)] == i) continue;
+        seen[static_cast<std::size_t>(j)] = i;
+        near.push_back(j);
+      }
+    from = to;
+  }
+}
+
+// The nodes at rest, filed by cells of `distance` as sorted (cell, node), and the ones within
+// `distance` of a node found in its cell and the 26 around it (none for a distance of 0).
+class RestNeighbours {
+ public:
+  RestNeighbours(Points rest, double distance) : rest_(std::move(rest)), distance_(distance) {
+    if (!(distance_ > 0.0)) return;
+    for (int i = 0; i < static_cast<int>(rest_.cols()); ++i)
+      cells_.emplace_back(packCell(cellOf(i)), i);
+    std::sort(cells_.begin(), cells_.end());
+  }
+
+  // Appends to `near` the nodes within the distance of node i not yet marked in `seen` for
+  // i, and marks them.
+  void append(int i, std::vector<int>& seen, std::vector<int>& near) const {
+    if (cells_.empty()) return;
+    const Eigen::Vector3i c = cellOf(i);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+          appendInCell(i, packCell(c + Eigen::Vector3i(dx, dy, dz)), seen, near);
+  }
+
+ private:
+  Eigen::Vector3i cellOf(int i) const {
+    return (rest_.col(i) / distance_).array().floor().cast<int>();
+  }
+  void appendInCell(int i, std::int64_t key, std::vector<int>& seen, std::vector<int>& near) const {
+    const auto first =
+        std::lower_bound(cells_.begin(), cells_.end(), std::pair<std::int64_t, int>(key, -1));
+    for (auto it = first; it != cells_.end() && it->first == key; ++it) {
+      const int j = it->second;
+      if (seen[static_cast<std::size_t>(j)] == i) continue;
+      if ((rest_.col(j) - rest_.col(i)).squaredNorm() >= distance_ * distance_) continue;
+      seen[static_cast<std::size_t>(j)] = i;
+      near.push_back(j);
+    }
+  }
+
+  Points rest_;  // a copy: the model hands out a view of its positions
+  double distance_;
+  std::vector<std::pair<std::int64_t, int>> cells_;
+};
 
 }  // namespace
 
@@ -41,63 +121,18 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
   for (int i = 0; i < tissue.nodeCount(); ++i)
     if (onSurface[static_cast<std::size_t>(i)]) surfaceNodes_.push_back(i);
 
-  // each surface node's own stretch of wall: the nodes at most kOwnWallLinks links from it, by
-  // breadth-first layers (a node is taken once: `seen` holds the node it was taken for), and
-  // the nodes within selfDistance of it at rest; the faces with a corner among them are the
-  // ones it never meets
-  const double self = params.selfDistance;
-  std::vector<std::pair<std::int64_t, int>> restGrid;  // (cell, node), cells of selfDistance
-  const auto restCell = [&](const Vec3& p) -> Eigen::Vector3i {
-    return (p / self).array().floor().cast<int>();
-  };
-  if (self > 0.0) {
-    for (int i = 0; i < tissue.nodeCount(); ++i) {
-      const Eigen::Vector3i c = restCell(rest.col(i));
-      restGrid.emplace_back(cellKey(c.x(), c.y(), c.z()), i);
-    }
-    std::sort(restGrid.begin(), restGrid.end());
-  }
-  std::vector<std::vector<int>> facesOf(static_cast<std::size_t>(tissue.nodeCount()));
-  for (int f = 0; f < static_cast<int>(tissue.triangles().size()); ++f)
-    for (int v : tissue.triangles()[static_cast<std::size_t>(f)])
-      facesOf[static_cast<std::size_t>(v)].push_back(f);
+  // the faces each surface node never meets: those with a corner on its own stretch of wall
+  // or within selfDistance of it at rest
+  const std::vector<std::vector<int>> facesOf = facesOfNodes(tissue);
+  const RestNeighbours restNear(rest, params.selfDistance);
   ownFaces_.resize(static_cast<std::size_t>(tissue.nodeCount()));
   std::vector<int> seen(static_cast<std::size_t>(tissue.nodeCount()), -1);
   std::vector<int> faceSeen(tissue.triangles().size(), -1);
   std::vector<int> near;
   for (int i : surfaceNodes_) {
-    near.assign(1, i);
-    seen[static_cast<std::size_t>(i)] = i;
-    std::size_t from = 0;
-    for (int hop = 0; hop < kOwnWallLinks; ++hop) {
-      const std::size_t to = near.size();
-      for (std::size_t k = from; k < to; ++k)
-        for (int li : tissue.linksOf(near[k])) {
-          const int j = tissue.otherEnd(li, near[k]);
-          if (seen[static_cast<std::size_t>(j)] == i) continue;
-          seen[static_cast<std::size_t>(j)] = i;
-          near.push_back(j);
-        }
-      from = to;
-    }
-    if (self > 0.0) {
-      const Eigen::Vector3i c = restCell(rest.col(i));
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const std::int64_t key = cellKey(c.x() + dx, c.y() + dy, c.z() + dz);
-            for (auto it = std::lower_bound(restGrid.begin(), restGrid.end(),
-                                            std::pair<std::int64_t, int>(key, -1));
-                 it != restGrid.end() && it->first == key; ++it) {
-              const int j = it->second;
-              if (seen[static_cast<std::size_t>(j)] != i &&
-                  (rest.col(j) - rest.col(i)).squaredNorm() < self * self) {
-                seen[static_cast<std::size_t>(j)] = i;
-                near.push_back(j);
-              }
-            }
-          }
-    }
+    near.clear();
+    appendOwnWall(tissue, i, seen, near);
+    restNear.append(i, seen, near);
     std::vector<int>& faces = ownFaces_[static_cast<std::size_t>(i)];
     for (int j : near)
       for (int f : facesOf[static_cast<std::size_t>(j)])
@@ -113,9 +148,7 @@ TissueContact::TissueContact(const SpringModel& tissue, const TissueContactParam
 }
 
 std::int64_t TissueContact::cellKey(int ix, int iy, int iz) const {
-  // 21 bits a coordinate: cells of ≥ 1 µm over ±1 m
-  const auto b = [](int v) { return static_cast<std::int64_t>(v) & 0x1FFFFF; };
-  return (b(ix) << 42) | (b(iy) << 21) | b(iz);
+  return packCell(Eigen::Vector3i(ix, iy, iz));
 }
 
 void TissueContact::buildGrid(const Points& x) const {
