@@ -3,11 +3,10 @@
 // with its needle's suture replaced by a thread (no needle) laid in an analytic knot of the
 // recogniser's tests (bench/knot_geometry.h's throws in a row; the surgeon's knot is a left
 // double throw, then a right single), scaled to a quarter, 300 equal links, 12 mm above the
-// vessel. The forceps take
-// the two ends (upright, closing across the thread's third node from each end from the third
-// frame: jaws laid along the thread would lie on the knot, and jaws are solid to it) and,
-// from the sixth, pull them apart 0.01 mm a frame each along the line between them. Shared by
-// the engine's scene test and the CLI's report test.
+// vessel. The forceps take the two ends (upright, closing across the thread's third node from
+// each end from the third frame: jaws laid along the thread would lie on the knot, and jaws
+// are solid to it) and, from the sixth, pull them apart 0.01 mm a frame each along the line
+// between them. Shared by the engine's scene test and the CLI's report test.
 #include "bench/knot_geometry.h"
 
 #include "microsim/sim/scene/scene.h"
