@@ -158,6 +158,17 @@ TEST(TissueContact, WithoutSelfDistanceAPlateLeavesItsOwnWallAndFindsTheOther) {
               tissueContactInA(pair.face, kTissueContactPlateFaces));
 }
 
+// The rest-distance rule: with a self distance past the plates' 1 mm at rest, the two plates
+// are one stretch of wall to each other, and brought within 0.05 mm they still never pair (at
+// the default 0.3 mm every node pairs: NearPairsEveryNodeWithAFaceOfTheOtherPlate).
+TEST(TissueContact, ASelfDistancePastTheRestGapKeepsThePlatesFromPairing) {
+  const SpringModel model = tissueContactPlates();
+  TissueContactParams params;
+  params.selfDistance = 1.1;
+  const TissueContact contact(model, params);
+  EXPECT_TRUE(contact.near(tissueContactPlateBAt(model, 0.05)).empty());
+}
+
 TEST(TissueContact, ViolationsAreNodesWithinHalfTheThicknessOrBehind) {
   const SpringModel model = tissueContactPlates();
   TissueContactParams params;
