@@ -142,14 +142,19 @@ TEST(TissueContact, AKeptGridFindsWhatAFreshOneFinds) {
   EXPECT_EQ(pairs, TissueContact(model, params).near(close));
 }
 
+/// Contact on the plates with the rest-distance rule at `selfDistance` (mm).
+TissueContact plateContactWithSelfDistance(const SpringModel& model, double selfDistance) {
+  TissueContactParams params;
+  params.selfDistance = selfDistance;
+  return TissueContact(model, params);
+}
+
 // Without a self distance a plate still never touches itself: every one of its faces within
 // reach of a node has a corner within three links of it (its own stretch of wall), while the
 // other plate, joined to it by no link, is found as before.
 TEST(TissueContact, WithoutSelfDistanceAPlateLeavesItsOwnWallAndFindsTheOther) {
   const SpringModel model = tissueContactPlates();
-  TissueContactParams params;
-  params.selfDistance = 0.0;
-  const TissueContact contact(model, params);
+  const TissueContact contact = plateContactWithSelfDistance(model, 0.0);
   EXPECT_TRUE(contact.near(tissueContactPlateBAt(model, 0.5)).empty());
   const std::vector<TissueContactPair> pairs = contact.near(tissueContactPlateBAt(model, 0.05));
   EXPECT_EQ(static_cast<int>(pairs.size()), model.nodeCount());
@@ -163,9 +168,7 @@ TEST(TissueContact, WithoutSelfDistanceAPlateLeavesItsOwnWallAndFindsTheOther) {
 // the default 0.3 mm every node pairs: NearPairsEveryNodeWithAFaceOfTheOtherPlate).
 TEST(TissueContact, ASelfDistancePastTheRestGapKeepsThePlatesFromPairing) {
   const SpringModel model = tissueContactPlates();
-  TissueContactParams params;
-  params.selfDistance = 1.1;
-  const TissueContact contact(model, params);
+  const TissueContact contact = plateContactWithSelfDistance(model, 1.1);
   EXPECT_TRUE(contact.near(tissueContactPlateBAt(model, 0.05)).empty());
 }
 
