@@ -29,11 +29,14 @@
 //           takes at most 12 iterations, else factorised anew (sparse LDLᵀ); where the true
 //           Hessian is indefinite (compressed links) that iteration takes its PSD projection
 //           (per spring, see spring_kernels.h). On regions of 2000 nodes or more K is the
-//           projection, solved by CG to an adaptive relative tolerance (inexact Newton,
-//           η = clamp(residual, 1e-4, 1e-2)) with smoothed-aggregation multigrid
-//           (multigrid.h), its hierarchy kept across iterations and steps until CG slows
-//           down. With SolverParams::activeRegion, the unknowns are only the free nodes the
-//           pull reaches (newton_solver.cpp). Honours point springs (point_spring.h).
+//           true Hessian too, solved by CG to an adaptive relative tolerance (inexact Newton,
+//           η = clamp(residual, 1e-4, 1e-2)) preconditioned by smoothed-aggregation
+//           multigrid (multigrid.h) built on the projection, its hierarchy kept across
+//           iterations and steps until CG slows down; CG stops at a direction of negative
+//           curvature with what it has (truncated Newton), or when the first direction
+//           has one, solves the projection instead. With SolverParams::activeRegion, the
+//           unknowns are only the free nodes the pull reaches (newton_solver.cpp). Honours
+//           point springs (point_spring.h).
 // reference newton on the whole mesh until the relative residual is ≤ 1e-10 (or the
 //           budget's own tolerance when smaller), whatever iteration budget it is given.
 

@@ -106,7 +106,8 @@ TEST(Multigrid, CgConvergesInFewIterationsWhateverTheStiffnessRatio) {
 }
 
 TEST(Multigrid, NewtonWithMultigridReachesTheReference) {
-  // 10³ has 900 free nodes, above the multigrid threshold: newton solves it with multigrid
+  // 10³ has 900 free nodes, under the 2000 where newton turns to multigrid: it solves
+  // with its direct path, and must reach the same equilibrium
   const int n = 10;
   const SpringModel model = stiffRatioBox(n);
   const SpringControls controls = testing::topPull(n, 2.0);
@@ -120,6 +121,31 @@ TEST(Multigrid, NewtonWithMultigridReachesTheReference) {
   const SolveReport r = makeSolver("newton", params)->solve(model, state, controls, budget);
   EXPECT_EQ(r.status, SolveStatus::Converged);
   EXPECT_LT(testing::maxDistance(state.x, reference.x), 1e-6);
+}
+
+TEST(Multigrid, NewtonOnALargeRegionConvergesInFewIterationsPokedOrPulled) {
+  // 14³ has 2548 free nodes, past the 2000 where newton turns to multigrid-preconditioned
+  // CG. The top middle node poked 3 down compresses the links below it (the true Hessian is
+  // indefinite there) or pulled 6 up stretches them. CG on the true Hessian, truncated at
+  // negative curvature, converges in 5 Newton iterations either way; on its projection it
+  // took 31 poked and 11 pulled (linear convergence).
+  const int n = 14;
+  const SpringModel model = latticeBox(n, 10.0);
+  for (const double d : {-3.0, 6.0}) {
+    SCOPED_TRACE(d);
+    const SpringControls controls = testing::topPull(n, d);
+    SpringState state = SpringState::atRest(model);
+    SolverParams params;
+    params.activeRegion = false;
+    SolveBudget budget;
+    budget.residualTolerance = 1e-9;
+    budget.maxIterations = 100;
+    const SolveReport r = makeSolver("newton", params)->solve(model, state, controls, budget);
+    EXPECT_EQ(r.status, SolveStatus::Converged);
+    EXPECT_LE(r.iterations, 8);
+    const SpringState reference = testing::referenceOf(model, SpringState::atRest(model), controls);
+    EXPECT_LT(testing::maxDistance(state.x, reference.x), 1e-6);
+  }
 }
 
 TEST(Multigrid, KeptHierarchyServesTheNextCycles) {
