@@ -277,6 +277,7 @@ bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out)
       !optPositive(v, path, "thread_length", s.length) || !optInt(v, path, "links", 2, s.links) ||
       !optInt(v, path, "needle_links", 1, s.needleLinks) ||
       !optPositive(v, path, "break_stretch", s.breakStretch) ||
+      !optPositive(v, path, "knot_break_stretch", s.knotBreakStretch) ||
       !optPositive(v, path, "contact_radius", s.contactRadius) ||
       !optNonNegative(v, path, "friction", s.friction) ||
       !optNonNegative(v, path, "drag", s.drag) ||

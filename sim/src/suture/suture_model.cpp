@@ -15,10 +15,10 @@ bool validSutureDef(const SutureDef& d) {
     if (d.needleShape == NeedleShape::Curved && !finitePositive(d.needleRadius)) return false;
     if (d.needleShape == NeedleShape::Straight && !finitePositive(d.needleLength)) return false;
   }
-  return finitePositive(d.breakStretch) && finitePositive(d.pierceReleaseDistance) &&
-         finitePositive(d.massPerLink) && finitePositive(d.needleMass) &&
-         finiteNonNegative(d.contactRadius) && finiteNonNegative(d.friction) &&
-         finiteNonNegative(d.drag);
+  return finitePositive(d.breakStretch) && finitePositive(d.knotBreakStretch) &&
+         finitePositive(d.pierceReleaseDistance) && finitePositive(d.massPerLink) &&
+         finitePositive(d.needleMass) && finiteNonNegative(d.contactRadius) &&
+         finiteNonNegative(d.friction) && finiteNonNegative(d.drag);
 }
 
 SutureModel::SutureModel(const SutureDef& def) : def_(def) {
@@ -78,6 +78,7 @@ SutureState SutureState::laidOut(const SutureModel& model, const Eigen::Isometry
   s.x = pose * model.restPositions();
   s.xPrev = s.x;
   s.alive.assign(model.linkCount(), 1);
+  s.heldPastBreak.assign(model.linkCount(), 0.0);
   return s;
 }
 

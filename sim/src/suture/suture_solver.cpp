@@ -1,5 +1,7 @@
 #include "microsim/sim/suture/suture_solver.h"
 
+#include "microsim/sim/suture/knot_strain.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -327,18 +329,25 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     // tight; with contact checked only before it, two strands of a knot crept into each other
     // (20 µm apart, then 18, 14, ..., 1) and crossed within 15 steps, so a surgeon's knot pulled
     // by both ends came apart into a square one. The lengths this pass disturbs are the
-    // thread's stretch under the knot's tension, restored by the next substep. It corrects
+    // thread's stretch under the knot's tension, restored by the next substep; the links it
+    // leaves past knotBreakStretch while the hands draw a knot on past tight are where the
+    // thread breaks (knot_strain.h), the pressed nodes it marks say where. It corrects
     // overlaps where they are now (the substep's start given as now: the catch of pairs that
     // passed through each other belongs to the rounds above, before the lengths), and moves
     // neither the leaders nor the rigid needle. The paper's follow-the-leader ("ftl") stays as
     // it was, the faithful peer whose lengths are exact after every substep.
-    if (params.selfContact && name() != "ftl")
-      self_.project(state.x, state.x, radius, 0.0, selfSkip, movableSurface_, state.alive, nullptr);
+    const bool selfPass = params.selfContact && name() != "ftl";
+    std::fill(selfTouched_.begin(), selfTouched_.end(), std::uint8_t{0});
+    if (selfPass)
+      self_.project(state.x, state.x, radius, 0.0, selfSkip, movableSurface_, state.alive,
+                    &selfTouched_);
 
-    // slide through pierces, then break between grips
+    // slide through pierces, then break between grips, or in a knot drawn past tight
     state.time += h;
     report.slides += slidePierces(model, state, current_, params.slideTolerance, report.events);
-    if (const std::optional<int> link = findBreak(model, state, current_)) {
+    std::optional<int> link = findBreak(model, state, current_);
+    if (!link && selfPass) link = findKnotBreak(model, state, current_, selfTouched_, selfSkip, h);
+    if (link) {
       state.alive[static_cast<std::size_t>(*link)] = 0;
       report.events.push_back({SutureEventKind::Break, *link, -1, state.time});
     }

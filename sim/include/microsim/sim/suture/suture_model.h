@@ -43,6 +43,9 @@ struct SutureDef {
   double needleRadius = 1.0;     ///< curved needle radius (mm); a 3/8 circle of it
   double needleLength = 2.5;     ///< straight needle length (mm)
   double breakStretch = 0.05;    ///< over-length between two hard constraints that breaks, relative
+  /// over-length of a link in a strand pressed on another (a knot drawn past tight) that,
+  /// held for kKnotBreakSeconds, breaks it, relative (knot_strain.h)
+  double knotBreakStretch = 0.10;
   /// mm: a passive pierce (the needle still carrying the suture through it) whose point lies
   /// farther than this from the needle has been left by it and is released (suture_constraints.h)
   double pierceReleaseDistance = 0.05;
@@ -115,6 +118,9 @@ struct SutureState {
   std::vector<Pierce> pierces;      ///< soft constraints through the tissue
   double time = 0.0;                ///< s
   double substep = 0.0;             ///< s: the last substep's length (x − xPrev spans it); 0 before any
+  /// per link: s it has been held past breakStretch by the thread pressing on itself, a knot
+  /// drawn past tight (knot_strain.h); empty or 0 otherwise
+  std::vector<double> heldPastBreak;
 
   /// The chain at rest, placed by `pose` (needle frame → world), at rest, nothing broken.
   static SutureState laidOut(const SutureModel& model,
