@@ -290,6 +290,7 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       report.selfPairs = params.selfContact ? self_.project(state.x, xStart_, radius, muNow, selfSkip,
                                                             movable_, state.alive, &selfTouched_)
                                             : 0;
+      if (params.selfContact) separated_ = state.x;
 
       // the bending limit on thread nodes nothing holds or touches
       for (std::size_t k = 0; k < free_.size(); ++k)
@@ -331,15 +332,18 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     // by both ends came apart into a square one. The lengths this pass disturbs are the
     // thread's stretch under the knot's tension, restored by the next substep; the links it
     // leaves past knotBreakStretch while the hands draw a knot on past tight are where the
-    // thread breaks (knot_strain.h), the pressed nodes it marks say where. It corrects
-    // overlaps where they are now (the substep's start given as now: the catch of pairs that
-    // passed through each other belongs to the rounds above, before the lengths), and moves
-    // neither the leaders nor the rigid needle. The paper's follow-the-leader ("ftl") stays as
-    // it was, the faithful peer whose lengths are exact after every substep.
+    // thread breaks (knot_strain.h), the pressed nodes it marks say where. Its start is where
+    // the last round's self-contact left the strands, parted (`separated_`): a pair the length
+    // restore since has dragged through each other is put back on the side it came from. With
+    // the strands' positions now as the start instead, a strand flicked across another at
+    // 0.6 mm a frame (four substeps) was dragged through by that restore and this pass pushed it
+    // on through. It moves neither the leaders nor the rigid needle. The paper's
+    // follow-the-leader ("ftl") stays as it was, the faithful peer whose lengths are exact after
+    // every substep.
     const bool selfPass = params.selfContact && name() != "ftl";
     std::fill(selfTouched_.begin(), selfTouched_.end(), std::uint8_t{0});
     if (selfPass)
-      self_.project(state.x, state.x, radius, 0.0, selfSkip, movableSurface_, state.alive,
+      self_.project(state.x, separated_, radius, 0.0, selfSkip, movableSurface_, state.alive,
                     &selfTouched_);
 
     // slide through pierces, then break between grips, or in a knot drawn past tight

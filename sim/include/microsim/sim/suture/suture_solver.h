@@ -126,6 +126,7 @@ class SutureSolver {
   std::vector<Vec3> clampFrom_;  // per grip between thread nodes: the link's direction at the step's start
   std::vector<Grip> current_;
   std::vector<std::uint8_t> movable_, movableSurface_, contact_, selfTouched_, free_;
+  Points separated_{3, 0};  ///< the thread as the last round's self-contact left it, parted
   std::vector<ContactExemption> exemptions_;
 };
 
