@@ -97,5 +97,29 @@ TEST(KnotStrain, AStrandAlongTheLinkOrAFreeEndCarriesNoKnot) {
     EXPECT_FALSE(findKnotBreak(free.model, free.state, oneEnd, free.pressed, kSkip, 0.0025));
 }
 
+TEST(KnotStrain, AGripOnOneSideAndAPierceOnTheOtherPullTheKnot) {
+  // a knot tied over a stitch: the hand holds one end, the tissue the thread through it
+  Thread t = threadWithACrossing(0.15, true);
+  Pierce hole;
+  hole.face = 0;
+  hole.barycentric = Vec3(1, 0, 0);
+  hole.node = 38;
+  hole.point = t.state.x.col(38);
+  t.state.pierces.push_back(hole);
+  const std::vector<Grip> hand = {{0, Vec3::Zero()}};
+  std::optional<int> broke;
+  for (int k = 0; k < 20 && !broke; ++k)
+    broke = findKnotBreak(t.model, t.state, hand, t.pressed, kSkip, 0.0025);
+  ASSERT_TRUE(broke.has_value());
+  EXPECT_EQ(*broke, 20);
+
+  // a hole before the crossing (node 15): links 15-40 have nothing pulling beyond them
+  Thread beyond = threadWithACrossing(0.15, true);
+  hole.node = 15;
+  beyond.state.pierces.push_back(hole);
+  for (int k = 0; k < 40; ++k)
+    EXPECT_FALSE(findKnotBreak(beyond.model, beyond.state, hand, beyond.pressed, kSkip, 0.0025));
+}
+
 }  // namespace
 }  // namespace microsim::sim::suture
