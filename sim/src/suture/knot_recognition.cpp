@@ -76,8 +76,12 @@ KnotThrow makeThrow(ThrowForm form, const std::vector<TakenCrossing>& taken, int
   t.wraps = wraps;
   t.crossings = static_cast<int>(taken.size());
   double sum = 0.0;
+  t.first = taken.front().firstAt;
+  t.last = taken.front().secondAt;
   for (const TakenCrossing& c : taken) {
     sum += c.firstAt + c.secondAt;
+    t.first = std::min({t.first, c.firstAt, c.secondAt});
+    t.last = std::max({t.last, c.firstAt, c.secondAt});
   }
   t.position = sum / (2.0 * static_cast<double>(taken.size()));
   return t;

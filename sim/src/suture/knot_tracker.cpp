@@ -132,9 +132,13 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
   }
   if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain && seated) {
     events_.push_back(knotEventOf(KnotEventKind::KnotTightened, step, confirmed_, tension));
-    tight_ = Tight{place(confirmed_), tension};
+    tight_ = Tight{place(confirmed_), tension, loop(confirmed_)};
   } else if (tight_ && isTieableKnot(confirmed_)) {
-    const double slide = std::abs(place(confirmed_) - tight_->place);
+    // on a stitch, only a loop that grows slips: a shrinking one is being run down
+    const double loopNow = loop(confirmed_);
+    const double slide = tight_->loop >= 0.0 && loopNow >= 0.0
+                             ? loopNow - tight_->loop
+                             : std::abs(place(confirmed_) - tight_->place);
     if (slide > def_.slipDistance && tension >= tight_->tension) {
       KnotEvent e = knotEventOf(KnotEventKind::KnotSlipped, step, confirmed_, tension);
       e.slide = slide;
@@ -189,8 +193,24 @@ double KnotTracker::place(const KnotReading& reading) const {
   for (const KnotThrow& t : reading.throws) {
     sum += t.position;
   }
-  const double s = std::clamp(sum / static_cast<double>(reading.throws.size()), 0.0,
-                              static_cast<double>(arc_.size() - 1));
+  return arcAt(sum / static_cast<double>(reading.throws.size()));
+}
+
+double KnotTracker::loop(const KnotReading& reading) const {
+  if (reading.throws.empty() || arc_.empty() || readAnchors_.empty()) {
+    return -1.0;
+  }
+  // the throw nearest the stitch, if it goes round it: a passage on either side of the holes
+  const KnotThrow& t = reading.throws.front();
+  const auto [low, high] = std::minmax_element(readAnchors_.begin(), readAnchors_.end());
+  if (!(t.first < *low && t.last > *high)) {
+    return -1.0;
+  }
+  return arcAt(t.last) - arcAt(t.first);
+}
+
+double KnotTracker::arcAt(double parameter) const {
+  const double s = std::clamp(parameter, 0.0, static_cast<double>(arc_.size() - 1));
   const auto i =
       static_cast<std::size_t>(std::min(std::floor(s), static_cast<double>(arc_.size()) - 1.0));
   const double t = s - static_cast<double>(i);

@@ -135,6 +135,34 @@ TEST(KnotTracker, AThrowRunDownUnderTensionIsTightenedOnceItStops) {
   EXPECT_TRUE(tracker.tightened());
 }
 
+// A half knot on a stitch, seated in a pause of its run down and so tightened, then run on
+// down by the long end alone: the needle side draws thread through the stitch (here: the long
+// end four links longer each step, which carries the knot's place 0.3 mm along the thread in
+// three steps) while the loop round the stitch shrinks. That is the throw still being snugged,
+// not a slip. (Read by the knot's place along the thread it was a slip 3 steps on, 0.30 mm,
+// which the instrument-tie lesson scores as a never-event.)
+TEST(KnotTracker, AThrowRunOnDownAfterItWasSeatedDoesNotSlip) {
+  KnotTracker tracker;
+  int step = 0;
+  const auto feed = [&](double lift, int longer, double stretch) {
+    const ThreadBuilder b = knot_test::stitchTwist(1.0, false, false, lift);
+    // `longer` links more on the needle side, laid straight on from node 0
+    Points x(3, b.points().cols() + longer);
+    const Vec3 back = b.points().col(0) - b.points().col(1);
+    for (int k = 0; k < longer; ++k) x.col(k) = b.points().col(0) + (longer - k) * back;
+    x.rightCols(b.points().cols()) = b.points();
+    std::vector<int> anchors;
+    for (const int a : b.anchors()) anchors.push_back(a + longer);
+    tracker.update(step++, x, anchors,
+                   std::vector<double>(static_cast<std::size_t>(x.cols() - 1), stretch));
+  };
+  for (int k = 0; k < 6; ++k) feed(0.3, 0, 0.003);  // seated 0.3 mm up, pulled
+  ASSERT_EQ(ofKind(tracker.events(), KnotEventKind::KnotTightened).size(), 1U);
+  for (int k = 1; k <= 6; ++k) feed(0.3 - 0.05 * k, 4 * k, 0.003 + 0.0001 * k);  // run on down
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotSlipped).empty());
+  EXPECT_TRUE(tracker.tightened());
+}
+
 TEST(KnotTracker, AKnotMovedAlongTheThreadWithItsEndsLetGoDoesNotSlip) {
   KnotTracker tracker;
   int step = tightenHalfKnot(tracker);

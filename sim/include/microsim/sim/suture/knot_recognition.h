@@ -70,6 +70,8 @@ struct KnotThrow {
   int wraps = 1;
   int crossings = 0;       ///< crossings it is made of
   double position = 0.0;   ///< curve parameter: the mean of its passages (node index + fraction)
+  double first = 0.0;      ///< curve parameter of its passage nearest node 0
+  double last = 0.0;       ///< curve parameter of its passage farthest from node 0
 };
 
 struct KnotRecognitionDef {

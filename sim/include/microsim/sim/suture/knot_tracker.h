@@ -22,7 +22,11 @@
 //    stretch) are given, and its place is kept.
 //  - KnotSlipped: a tightened knot that lost throws or its type (StructureLost), or whose place
 //    along the thread moved by more than `slipDistance` while the tension stayed at or above
-//    the tension it was tightened with (Sliding: the thread running through the knot). A slipped
+//    the tension it was tightened with (Sliding: the thread running through the knot). On a
+//    stitch (anchors given, the throw nearest them around them) the place is the loop: the
+//    thread from the throw's first passage through the stitch to its last. It slips when the
+//    loop grows by more than `slipDistance` (the knot letting the stitch open); a loop that
+//    shrinks is the throw still being run down, whatever its place does. A slipped
 //    knot is tightened again once its ends have been let go (stretch below `tightStrain`) and
 //    pulled again, or once a new throw has been added.
 //
@@ -90,9 +94,12 @@ class KnotTracker {
   struct Tight {
     double place = 0.0;    // mm along the thread from node 0
     double tension = 0.0;  // g·mm/s²
+    double loop = -1.0;    // mm (loop()); < 0: no stitch under the knot
   };
   void confirm(int step, const KnotReading& reading, double tension);
   double place(const KnotReading& reading) const;
+  double loop(const KnotReading& reading) const;
+  double arcAt(double parameter) const;
 
   KnotTrackerDef def_;
   Points read_{3, 0};               // the nodes as last read

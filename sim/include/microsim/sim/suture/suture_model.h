@@ -118,7 +118,7 @@ struct SutureState {
   std::vector<Pierce> pierces;      ///< soft constraints through the tissue
   double time = 0.0;                ///< s
   double substep = 0.0;             ///< s: the last substep's length (x − xPrev spans it); 0 before any
-  /// per link: s it has been held past breakStretch by the thread pressing on itself, a knot
+  /// per link: s it has been held past knotBreakStretch by the thread pressing on itself, a knot
   /// drawn past tight (knot_strain.h); empty or 0 otherwise
   std::vector<double> heldPastBreak;
 
