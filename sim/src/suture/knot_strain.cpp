@@ -40,32 +40,47 @@ std::optional<int> findKnotBreak(const SutureModel& model, SutureState& state,
                                  int skip, double seconds) {
   const int links = model.linkCount();
   state.heldPastBreak.resize(static_cast<std::size_t>(links), 0.0);
-  // the links something pulls from both sides: between a piece's first and last grip or pierce
+
+  // the thread links pressed on and past the limit: nearly every substep has none, and then
+  // nothing more is looked at
+  const double limit = 1.0 + model.def().knotBreakStretch;
+  std::vector<double> stretchOf(static_cast<std::size_t>(links), 0.0);
+  bool any = false;
+  for (int l = model.swage(); l < links; ++l) {
+    const auto at = static_cast<std::size_t>(l);
+    if (state.alive[at] == 0 || (pressed[at] == 0 && pressed[at + 1] == 0)) continue;
+    const double stretch = (state.x.col(l + 1) - state.x.col(l)).norm() / model.rest(l);
+    if (stretch > limit) {
+      stretchOf[at] = stretch;
+      any = true;
+    }
+  }
+  if (!any) {
+    std::fill(state.heldPastBreak.begin(), state.heldPastBreak.end(), 0.0);
+    return std::nullopt;
+  }
+
+  // of those, the ones something pulls from both sides (between a piece's first and last grip
+  // or pierce) with another strand against them from the side
   std::vector<std::uint8_t> pulled(static_cast<std::size_t>(links), 0);
   for (const Piece& piece : chainPieces(state.alive)) {
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
     if (cs.size() < 2) continue;
     for (int l = cs.front().node; l < cs.back().node; ++l) pulled[static_cast<std::size_t>(l)] = 1;
   }
-  const double limit = 1.0 + model.def().knotBreakStretch;
   std::optional<int> worst;
   double worstStretch = 0.0;
   for (int l = 0; l < links; ++l) {
-    double& held = state.heldPastBreak[static_cast<std::size_t>(l)];
     const auto at = static_cast<std::size_t>(l);
-    // the needle is rigid: only thread links break
-    const bool thread = l >= model.swage() && state.alive[at] != 0 && pulled[at] != 0;
-    const bool pressedOn = pressed[at] != 0 || pressed[at + 1] != 0;
-    const double stretch =
-        thread ? (state.x.col(l + 1) - state.x.col(l)).norm() / model.rest(l) : 0.0;
-    if (!pressedOn || !(stretch > limit) ||
+    double& held = state.heldPastBreak[at];
+    if (stretchOf[at] == 0.0 || pulled[at] == 0 ||
         !pressedFromTheSide(state.x, state.alive, l, skip, 2.0 * model.def().contactRadius)) {
       held = 0.0;
       continue;
     }
     held += seconds;
-    if (held >= kKnotBreakSeconds && stretch > worstStretch) {
-      worstStretch = stretch;
+    if (held >= kKnotBreakSeconds && stretchOf[at] > worstStretch) {
+      worstStretch = stretchOf[at];
       worst = l;
     }
   }
