@@ -254,7 +254,7 @@ bool SceneReader::forceps(const json& v, const std::string& path, SceneDef& out)
 bool SceneReader::needle(const json& v, const std::string& path, NeedleDef& out) {
   if (!object(v, path,
               {"shape", "radius", "length", "thread_length", "links", "needle_links",
-               "break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
+               "break_stretch", "knot_break_stretch", "contact_radius", "friction", "drag", "position", "rotation",
                "solver", "substeps", "iterations", "coupling_gain", "coupling_stiffness", "puncture_force",
                "min_tie_length", "stay_stitch"}))
     return false;

@@ -57,6 +57,20 @@ TEST(SceneDef, TheAnastomosisSceneHasTwoVesselEndsTwoForcepsAndANeedle) {
   EXPECT_EQ(s.limits.tear, 0.6);
 }
 
+TEST(SceneDef, TheThreadsBreakingStretchesAreRead) {
+  SceneDefLoad load = parseSceneDef(
+      R"({"objects": [{"type": "severed-vessel"}], "tools": {"needle": {"break_stretch": 0.04, "knot_break_stretch": 0.15}}})");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(load));
+  const SceneDef& s = std::get<SceneDef>(load);
+  ASSERT_TRUE(s.needle.has_value());
+  EXPECT_EQ(s.needle->suture.breakStretch, 0.04);
+  EXPECT_EQ(s.needle->suture.knotBreakStretch, 0.15);
+  // unset: a knot breaks at twice the grips' stretch (knot_strain.h)
+  const SceneDefLoad plain = parseSceneDef(R"({"objects": [{"type": "severed-vessel"}], "tools": {"needle": {}}})");
+  ASSERT_TRUE(std::holds_alternative<SceneDef>(plain));
+  EXPECT_EQ(std::get<SceneDef>(plain).needle->suture.knotBreakStretch, 0.10);
+}
+
 TEST(SceneDef, AVesselMaterialIsReadAndAnExplicitStiffnessWins) {
   SceneDefLoad load = parseSceneDef(R"({"objects": [{"type": "severed-vessel", "k_between": 80,
       "material": {"youngs_modulus": 2e5, "fung_exponent": 7}}]})");
@@ -180,6 +194,10 @@ TEST(SceneDef, BadValuesAreRejectedByField) {
        SceneErrorKind::InvalidValue, "tools.scissors.cut_at"},
       {R"({"objects": [{"type": "severed-vessel"}], "tools": {"needle": {"min_tie_length": -1}}})",
        SceneErrorKind::NegativeValue, "tools.needle.min_tie_length"},
+      {R"({"objects": [{"type": "severed-vessel"}], "tools": {"needle": {"knot_break_stretch": 0}}})",
+       SceneErrorKind::InvalidValue, "tools.needle.knot_break_stretch"},
+      {R"({"objects": [{"type": "severed-vessel"}], "tools": {"needle": {"knot_break_stretch": "10 %"}}})",
+       SceneErrorKind::WrongType, "tools.needle.knot_break_stretch"},
       {R"({"objects": [{"type": "severed-vessel"}], "step": {"rate_hz": 0}})",
        SceneErrorKind::InvalidValue, "step.rate_hz"},
       {R"({"objects": [{"type": "severed-vessel"}], "collision": {"tree": "kd"}})",
