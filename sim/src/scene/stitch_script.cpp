@@ -140,6 +140,10 @@ std::vector<ExpectedPierce> stitchPierces(const SceneDef& scene, const StitchScr
 /// past letting go at the scenes' close_at of 0.8, about 0.2 mm between the tips.
 constexpr double kStitchSlightOpening = 0.25;
 
+/// How far a tool draws back along its jaws, from the tips toward the hinge, to leave the
+/// needle or before it comes down onto it (mm): the jaws' tips then clear the needle.
+constexpr double kStitchToolDrawBackMm = 1.5;
+
 Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
   Recording rec;
   const std::optional<Pass> p = pass(scene, def);
@@ -192,18 +196,52 @@ Recording scriptedStitch(const SceneDef& scene, const StitchScriptDef& def) {
     w.emit();
   }
 
-  // 4. the holder lets go; the forceps takes the needle behind its tip
+  // 4. the forceps takes the needle behind its tip, then the holder lets go, as hands pass a
+  // needle: the forceps comes from where it waited to beside the needle, its jaws in line with
+  // the place it will take, slides down onto it along its jaws and closes; only then does the
+  // holder open and draw back along its own jaws (the needle leaves between their tips) and go
+  // aside. The needle is held all the while. (Before, the holder let go first and both tools
+  // jumped 3–4 mm in one frame: no hand moves so, and the needle, held by nothing, moved the
+  // holes it was in; the solves of those frames started far from balance.)
   const Eigen::Isometry3d last = needleOnPassCircle(g, stop);
+  const Eigen::Isometry3d holderAt = last * holderGrip;
+  const Eigen::Isometry3d forcepsAt = last * forcepsGrip;
+  const auto drawnBack = [](const Eigen::Isometry3d& tool) {
+    Eigen::Isometry3d back = tool;
+    back.translation() += kStitchToolDrawBackMm * tool.linear().col(0);
+    return back;
+  };
+  const double slight = 1.0 - kStitchSlightOpening;
+  for (int k = 1, n = w.steps(0.2); k <= n; ++k) {
+    const double f = static_cast<double>(k) / n;
+    w.hand(Hand::Left, Instrument::Forceps, blend(park, drawnBack(forcepsAt), f), f * slight);
+    w.emit();
+  }
+  for (int k = 1, n = w.steps(0.2); k <= n; ++k) {
+    w.hand(Hand::Left, Instrument::Forceps,
+           blend(drawnBack(forcepsAt), forcepsAt, static_cast<double>(k) / n), slight);
+    w.emit();
+  }
+  for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
+    w.hand(Hand::Left, Instrument::Forceps, forcepsAt,
+           1.0 - kStitchSlightOpening * (1.0 - static_cast<double>(k) / n));
+    w.emit();
+  }
   for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
     // opened no further than it takes to let go (a closure just under close_at): a jaw opened
     // wide would swing down into the wall below
-    w.hand(Hand::Right, Instrument::NeedleHolder, last * holderGrip, 1.0 - kStitchSlightOpening * k / n);
-    w.hand(Hand::Left, Instrument::Forceps, park, 0.0);
+    w.hand(Hand::Right, Instrument::NeedleHolder, holderAt, 1.0 - kStitchSlightOpening * k / n);
     w.emit();
   }
-  w.hand(Hand::Right, Instrument::NeedleHolder, parkRight, 0.0);
-  for (int k = 1, n = w.steps(0.1); k <= n; ++k) {
-    w.hand(Hand::Left, Instrument::Forceps, last * forcepsGrip, 1.0 - kStitchSlightOpening * (1.0 - static_cast<double>(k) / n));
+  for (int k = 1, n = w.steps(0.2); k <= n; ++k) {
+    w.hand(Hand::Right, Instrument::NeedleHolder,
+           blend(holderAt, drawnBack(holderAt), static_cast<double>(k) / n), slight);
+    w.emit();
+  }
+  for (int k = 1, n = w.steps(0.2); k <= n; ++k) {
+    const double f = static_cast<double>(k) / n;
+    w.hand(Hand::Right, Instrument::NeedleHolder, blend(drawnBack(holderAt), parkRight, f),
+           (1.0 - f) * slight);
     w.emit();
   }
   const double out = def.pullOutDeg * kDeg;

@@ -57,6 +57,7 @@ TEST_P(FarEndPierce, TheFarEndIsPiercedExactlyWhenTheTipGoesThroughItsWall) {
   StitchScriptDef script;
   script.biteMm = pass.biteMm;
   script.endDeg = pass.endDeg;
+  script.passSeconds = 1.4;  // each pass over the same time, however far it turns
   const std::optional<StitchGeometry> g = stitchGeometry(def, script);
   ASSERT_TRUE(g.has_value());
   const Recording rec = scriptedStitch(def, script);

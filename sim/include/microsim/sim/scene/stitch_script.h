@@ -19,9 +19,12 @@
 //   1. the holder goes to the needle where the scene lays it and closes on it (grip at
 //      needle node `gripNode`);
 //   2. it carries the needle to the start of the arc, tip above end 0;
-//   3. it turns the needle about C through both walls (the four pierces);
-//   4. it opens; the left forceps closes on the needle behind the tip, turns it on along
-//      its arc until the needle is out, and pulls the thread through;
+//   3. it turns the needle about C through both walls (the four pierces), on until the
+//      needle behind its tip stands clear of the far wall;
+//   4. the left forceps comes to the needle from the side, slides onto it along its jaws and
+//      closes behind the tip; only then does the holder open, draw back along its jaws and go
+//      aside (the needle is held throughout, as hands pass it); the forceps turns the needle
+//      on along its arc until it is out, and pulls the thread through;
 //   5. it opens.
 //
 // Units: millimetres, seconds, radians.
@@ -37,8 +40,10 @@ namespace microsim::sim {
 struct StitchScriptDef {
   double biteMm = 0.25;       ///< b: entry distance from each cut end (mm)
   double startDeg = -70.0;    ///< ψ where the pass starts (degrees)
-  double endDeg = 70.0;       ///< ψ where the holder lets go (degrees)
-  double passSeconds = 1.4;   ///< duration of phase 3 (s)
+  double endDeg = 85.0;       ///< ψ where the forceps takes the needle and the holder lets go
+                              ///< (degrees): node `pullGripNode` then stands clear of the far
+                              ///< wall, and the forceps' jaws close on it without touching it
+  double passSeconds = 1.55;  ///< duration of phase 3 (s): 1° a frame
   int gripNode = 8;           ///< needle node the holder takes (the swage: its jaws stay clear
                               ///< of the walls the needle turns through)
   int pullGripNode = 1;       ///< needle node the forceps takes
