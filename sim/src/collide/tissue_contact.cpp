@@ -163,6 +163,7 @@ void TissueContact::buildGrid(const Points& x) const {
   }
   gridX_ = x;
   grid_.clear();
+  gridLeftFaceOut_ = false;
   const double r = params_.reach + slack;
   const auto& triangles = tissue_.triangles();
   for (int f = 0; f < static_cast<int>(triangles.size()); ++f) {
@@ -170,7 +171,10 @@ void TissueContact::buildGrid(const Points& x) const {
     Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - r;
     Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + r;
     // a face torn far apart (or not finite) is left out rather than spread over the grid
-    if (!lo.allFinite() || !hi.allFinite() || ((hi - lo).array() > 64.0 * cell_).any()) continue;
+    if (!lo.allFinite() || !hi.allFinite() || ((hi - lo).array() > 64.0 * cell_).any()) {
+      gridLeftFaceOut_ = true;
+      continue;
+    }
     const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
     const Eigen::Vector3i b = (hi / cell_).array().floor().cast<int>();
     for (int ix = a.x(); ix <= b.x(); ++ix)
@@ -180,7 +184,8 @@ void TissueContact::buildGrid(const Points& x) const {
   std::sort(grid_.begin(), grid_.end());
 }
 
-std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius) const {
+std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius,
+                                                  double watch, double& nearest) const {
   const Vec3 p = x.col(node);
   if (!p.allFinite()) return {-1, 0.0};
   const std::vector<int>& own = ownFaces_[static_cast<std::size_t>(node)];
@@ -196,12 +201,13 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
     // a face whose box, grown by the radius, misses the node is farther than the radius
     // along one axis: most of a cell's faces (their boxes were grown by reach + slack) go
     // here, before the dearer eligibility and closest-point tests
-    if ((p.array() < faceLow_.col(f).array() - radius).any() ||
-        (p.array() > faceHigh_.col(f).array() + radius).any())
+    if ((p.array() < faceLow_.col(f).array() - watch).any() ||
+        (p.array() > faceHigh_.col(f).array() + watch).any())
       continue;
     if (std::binary_search(own.begin(), own.end(), f)) continue;
     const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
+    nearest = std::min(nearest, q.distance);
     if (!(q.distance < radius)) continue;
     const Vec3 normal = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).normalized();
     const double side = normal.dot(p - q.point);
@@ -217,10 +223,19 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   return {best, bestSigned};
 }
 
+bool TissueContact::stillClear(const Points& x) const {
+  if (clearX_.cols() != x.cols() || x.cols() == 0) return false;
+  const double quarter = 0.25 * params_.reach;
+  // (a node that is not finite compares false and ends the skip)
+  for (Eigen::Index i = 0; i < x.cols(); ++i)
+    if (!((x.col(i) - clearX_.col(i)).squaredNorm() <= quarter * quarter)) return false;
+  return true;
+}
+
 std::vector<TissueContactPair> TissueContact::pairsCloserThan(const Points& x, double signedDistance) const {
   std::vector<TissueContactPair> pairs;
   const auto& triangles = tissue_.triangles();
-  if (triangles.empty()) return pairs;
+  if (triangles.empty() || stillClear(x)) return pairs;
   buildGrid(x);
   // every face's box at these positions, once for all the nodes that look at it
   faceLow_.resize(3, static_cast<Eigen::Index>(triangles.size()));
@@ -231,10 +246,18 @@ std::vector<TissueContactPair> TissueContact::pairsCloserThan(const Points& x, d
     faceLow_.col(column) = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2]));
     faceHigh_.col(column) = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2]));
   }
+  // the grid holds every face within reach + slack/2 of a node (buildGrid): so far the
+  // clearance is known exactly
+  const double watch = 1.5 * params_.reach;
+  double nearest = std::numeric_limits<double>::infinity();
   for (int i : surfaceNodes_) {
-    const auto [face, distance] = closestFace(x, i, params_.reach);
+    const auto [face, distance] = closestFace(x, i, params_.reach, watch, nearest);
     if (face >= 0 && distance < signedDistance) pairs.push_back({i, face});
   }
+  if (nearest >= watch && !gridLeftFaceOut_)
+    clearX_ = x;
+  else
+    clearX_.resize(3, 0);
   return pairs;
 }
 

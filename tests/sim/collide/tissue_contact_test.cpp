@@ -142,6 +142,29 @@ TEST(TissueContact, AKeptGridFindsWhatAFreshOneFinds) {
   EXPECT_EQ(pairs, TissueContact(model, params).near(close));
 }
 
+// Plate B brought down onto A 5 µm a query, from 0.2025 mm (clear of A by more than 1.5 reach:
+// the queries that follow within a quarter reach of there are answered at once), on through
+// 0.15 mm (no longer clear: every query looks again) into reach and past it: at every height the
+// kept object gives the pairs and violations a fresh one gives, and the pairs do come.
+TEST(TissueContact, QueriesWhileTheTissueStaysNearWhereItWasClearFindWhatAFreshOneFinds) {
+  const SpringModel model = tissueContactPlates();
+  const TissueContactParams params;
+  const TissueContact kept(model, params);
+  std::size_t found = 0;
+  for (int k = 0; k <= 40; ++k) {
+    const double z = 0.2025 - 0.005 * k;  // never at the reach itself
+    SCOPED_TRACE(z);
+    const Points x = tissueContactPlateBAt(model, z);
+    const TissueContact fresh(model, params);
+    const std::vector<TissueContactPair> pairs = kept.near(x);
+    EXPECT_EQ(pairs, fresh.near(x));
+    EXPECT_EQ(kept.violations(x), fresh.violations(x));
+    EXPECT_EQ(pairs.empty(), z >= params.reach);
+    found += pairs.size();
+  }
+  EXPECT_GT(found, 0u);
+}
+
 /// Contact on the plates with the rest-distance rule at `selfDistance` (mm).
 TissueContact plateContactWithSelfDistance(const SpringModel& model, double selfDistance) {
   TissueContactParams params;
