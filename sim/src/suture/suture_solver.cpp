@@ -14,6 +14,54 @@ namespace {
 
 bool finite(const Points& x) { return x.allFinite(); }
 
+// Sliding is how this chain draws thread through a hole: the hole moves on to the next node
+// (suture_constraints.h), and the substep after puts that node on the hole. Through a free tail
+// the next substep then carried the whole tail a link (0.15 mm) in one substep and kept that as
+// speed: each link the hole slid by whipped the tail, and the tail drawn after the shipped
+// stitch's needle piled up within 0.8 mm of the entry. So a free tail beyond the outermost
+// hole of its piece that slid d nodes along it is re-laid d nodes on at once: node i takes the
+// place and the previous place of node i − d (the tail keeps its shape and its speed; its end
+// draws back d links), so the new hole node lies on the hole. The d nodes that came to the drawn
+// side keep theirs; the next substep lays them out.
+void relayFreeTails(const SutureModel& model, SutureState& state, std::span<const int> before,
+                    std::span<const Grip> grips) {
+  if (before.size() != state.pierces.size()) return;  // a hole released: nothing to follow
+  const int swage = model.swage();
+  const auto gripped = [&](int a, int b) {
+    for (const Grip& g : grips)
+      if ((g.fraction > 0.0 ? g.node + 1 : g.node) >= a && g.node <= b) return true;
+    return false;
+  };
+  const auto relay = [&](int node, int from) {
+    state.x.col(node) = state.x.col(from);
+    state.xPrev.col(node) = state.xPrev.col(from);
+  };
+  for (const Piece& piece : chainPieces(state.alive)) {
+    const auto inPiece = [&](int n) { return n >= swage && n >= piece.first && n <= piece.last; };
+    int hiNow = -1, hiBefore = -1;
+    int loNow = piece.last + 1, loBefore = piece.last + 1;
+    bool same = true;  // the same holes hold thread in this piece before and after
+    for (std::size_t k = 0; k < state.pierces.size(); ++k) {
+      const int now = state.pierces[k].node;
+      if (inPiece(now) != inPiece(before[k])) same = false;
+      if (!inPiece(now) || !inPiece(before[k])) continue;
+      hiNow = std::max(hiNow, now);
+      hiBefore = std::max(hiBefore, before[k]);
+      loNow = std::min(loNow, now);
+      loBefore = std::min(loBefore, before[k]);
+    }
+    if (!same || hiNow < 0) continue;
+    const int up = hiNow - hiBefore;
+    if (up > 0 && !gripped(hiBefore, piece.last))
+      for (int i = piece.last; i >= hiNow; --i) relay(i, i - up);
+    // towards the low end only where it is free thread, not the needle
+    const int down = loBefore - loNow;
+    const bool lowFree = model.needleLinks() == 0 || piece.first > swage;
+    if (down > 0 && lowFree && !gripped(piece.first, loBefore))
+      for (int i = piece.first; i <= loNow; ++i) relay(i, i + down);
+  }
+}
+
 bool validInput(const SutureModel& model, const SutureState& state, std::span<const Grip> grips,
                 const SutureStepParams& params) {
   if (state.x.cols() != model.nodeCount() || state.xPrev.cols() != model.nodeCount() ||
@@ -348,7 +396,11 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
 
     // slide through pierces, then break between grips, or in a knot drawn past tight
     state.time += h;
-    report.slides += slidePierces(model, state, current_, params.slideTolerance, report.events);
+    holesBefore_.clear();
+    for (const Pierce& p : state.pierces) holesBefore_.push_back(p.node);
+    const int slid = slidePierces(model, state, current_, params.slideTolerance, report.events);
+    report.slides += slid;
+    if (slid > 0 && name() != "ftl") relayFreeTails(model, state, holesBefore_, current_);
     std::optional<int> link = findBreak(model, state, current_);
     if (!link && selfPass) link = findKnotBreak(model, state, current_, selfTouched_, selfSkip, h);
     if (link) {

@@ -1,5 +1,5 @@
 // Microscissors in the shipped scene: after the shipped stitch, scissors closed across the
-// short tail 1.5 mm beyond the first entry cut it there and report the end left at the
+// short tail a millimetre beyond the first entry cut it there and report the end left at the
 // stitch; the needle keeps the rest, and a cut next to the needle reports a thread too short to
 // tie; scissors that close beside the thread, or are taken up closed, cut nothing; frames with
 // the scissors, written to a recording and read back, replay to the same state and cut.
@@ -22,11 +22,6 @@ namespace microsim::sim {
 namespace {
 
 const std::string kRoot = MICROSIM_SOURCE_DIR;
-
-/// mm along the tail from the first entry to where the blades close: past the first 0.8 mm,
-/// where the tail drawn after the needle lies bunched at the entry (blades across the bunch
-/// cut every strand of it; these tests are about one cut).
-constexpr double kCutFromEntryMm = 1.5;
 
 SceneDef shippedScene() {
   SceneDefLoad load = loadSceneDef(kRoot + "/resources/scenes/anastomosis.json");
@@ -117,7 +112,7 @@ TEST(ScissorsCut, TheThreadIsCutWhereTheBladesCloseAndTheEndIsMeasured) {
   ASSERT_FALSE(st.pierces.empty());
   const int anchor = pierceNodeNearestTail(st);
   ASSERT_GT(anchor, scene.sutureModel()->swage());
-  const auto [point, along] = pointTowardsTail(st, anchor, kCutFromEntryMm);
+  const auto [point, along] = pointTowardsTail(st, anchor, 1.0);
   const int brokenBefore = st.brokenLinkCount();
 
   for (const InputFrame& f : closeScissors(s.last, scissorsAcross(point, along, 0.0))) scene.step(f);
@@ -127,7 +122,7 @@ TEST(ScissorsCut, TheThreadIsCutWhereTheBladesCloseAndTheEndIsMeasured) {
   EXPECT_EQ(cuts[0].hand, 1);
   EXPECT_EQ(scene.sutureState()->brokenLinkCount(), brokenBefore + 1);
   EXPECT_FALSE(scene.sutureState()->alive[static_cast<std::size_t>(cuts[0].index)]);
-  // the link cut is the one under the blades, and the end left at the stitch is the length
+  // the link cut is the one under the blades, and the end left at the stitch is the millimetre
   // the blades were put at (within a link's length: the cut is at a link, the thread moved)
   EXPECT_GE(cuts[0].index, anchor);
   // (the thread sags a little while the blades close): measured along the thread from the
@@ -138,7 +133,7 @@ TEST(ScissorsCut, TheThreadIsCutWhereTheBladesCloseAndTheEndIsMeasured) {
   const double linkLength = (x.col(cuts[0].index + 1) - x.col(cuts[0].index)).norm();
   EXPECT_GE(cuts[0].value, toLink - 1e-3);
   EXPECT_LE(cuts[0].value, toLink + linkLength + 1e-3);
-  EXPECT_NEAR(cuts[0].value, kCutFromEntryMm, 0.3);
+  EXPECT_NEAR(cuts[0].value, 1.0, 0.3);
   // the needle keeps the thread from its swage to the cut (through the stitch); enough of it
   // to tie, or reported
   double kept = 0.0;
@@ -155,7 +150,7 @@ TEST(ScissorsCut, ScissorsFramesWrittenToARecordingReplayToTheSameStateAndCut) {
   ASSERT_TRUE(readRecording(kRoot + "/resources/recordings/stitch.msrec", rec).ok());
   Stitched s = stitched();
   const suture::SutureState& st = *s.scene->sutureState();
-  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), kCutFromEntryMm);
+  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), 1.0);
   for (const InputFrame& f : closeScissors(s.last, scissorsAcross(point, along, 0.0))) {
     s.scene->step(f);
     rec.frames.push_back(f);
@@ -207,7 +202,7 @@ TEST(ScissorsCut, BladesClosingBesideTheThreadCutNothing) {
   Stitched s = stitched();
   Scene& scene = *s.scene;
   const suture::SutureState& st = *scene.sutureState();
-  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), kCutFromEntryMm);
+  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), 1.0);
   // the same scissors 1 mm above the thread
   HandInput open = scissorsAcross(point + Vec3(0.0, 0.0, 1.0), along, 0.0);
   for (const InputFrame& f : closeScissors(s.last, open)) scene.step(f);
@@ -219,7 +214,7 @@ TEST(ScissorsCut, ScissorsTakenUpClosedDoNotCut) {
   Stitched s = stitched();
   Scene& scene = *s.scene;
   const suture::SutureState& st = *scene.sutureState();
-  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), kCutFromEntryMm);
+  const auto [point, along] = pointTowardsTail(st, pierceNodeNearestTail(st), 1.0);
   InputFrame f = s.last;
   f.time += 0.01;
   f.hand(Hand::Right) = scissorsAcross(point, along, 1.0);

@@ -164,6 +164,14 @@ TEST(Stitch, ThePiercesKeepThePathOrderAtEveryStepOfTheShippedReplay) {
   // the stitch is complete: the four pierces on the thread, the first made farthest from the tip
   ASSERT_EQ(scene.sutureState()->pierces.size(), 4u) << nodes();
   EXPECT_GE(scene.sutureState()->pierces.back().node, swage) << nodes();
+  // the tail drawn through after the needle lies as it was laid, not piled at the first entry:
+  // its first eight links from there span more than 0.7 of their length (0.83 here; 0.30
+  // when each link the holes slid by whipped it, suture_tail_test.cpp)
+  const Points& x = scene.sutureState()->x;
+  int entry = 0;
+  for (const suture::Pierce& p : scene.sutureState()->pierces) entry = std::max(entry, p.node);
+  const int tailEnd = std::min(entry + 8, static_cast<int>(x.cols()) - 1);
+  EXPECT_GT((x.col(tailEnd) - x.col(entry)).norm() / scene.sutureModel()->arc(entry, tailEnd), 0.7);
 }
 
 // The shipped stitch up to the first wall's two pierces, then the same hand motion played

@@ -122,6 +122,7 @@ class SutureSolver {
   ChainBlocks blocks_;
   Points xStart_{3, 0};
   std::vector<Leader> leaders_;
+  std::vector<int> holesBefore_;  ///< each pierce's node before this substep's slides
   std::vector<Vec3> gripFrom_;
   std::vector<Vec3> clampFrom_;  // per grip between thread nodes: the link's direction at the step's start
   std::vector<Grip> current_;
