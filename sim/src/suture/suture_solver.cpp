@@ -22,14 +22,20 @@ bool finite(const Points& x) { return x.allFinite(); }
 // hole of its piece that slid d nodes along it is re-laid d nodes on at once: node i takes the
 // place and the previous place of node i − d (the tail keeps its shape and its speed; its end
 // draws back d links), so the new hole node lies on the hole. The d nodes that came to the drawn
-// side keep theirs; the next substep lays them out.
+// side keep theirs; the next substep lays them out. A tail that touches itself (a throw in it)
+// is left alone: re-laid, its thread would slide through its own knot.
 void relayFreeTails(const SutureModel& model, SutureState& state, std::span<const int> before,
-                    std::span<const Grip> grips) {
+                    std::span<const Grip> grips, std::span<const std::uint8_t> selfTouched) {
   if (before.size() != state.pierces.size()) return;  // a hole released: nothing to follow
   const int swage = model.swage();
   const auto gripped = [&](int a, int b) {
     for (const Grip& g : grips)
       if ((g.fraction > 0.0 ? g.node + 1 : g.node) >= a && g.node <= b) return true;
+    return false;
+  };
+  const auto touched = [&](int a, int b) {
+    for (int i = a; i <= b; ++i)
+      if (selfTouched[static_cast<std::size_t>(i)]) return true;
     return false;
   };
   const auto relay = [&](int node, int from) {
@@ -52,12 +58,12 @@ void relayFreeTails(const SutureModel& model, SutureState& state, std::span<cons
     }
     if (!same || hiNow < 0) continue;
     const int up = hiNow - hiBefore;
-    if (up > 0 && !gripped(hiBefore, piece.last))
+    if (up > 0 && !gripped(hiBefore, piece.last) && !touched(hiBefore, piece.last))
       for (int i = piece.last; i >= hiNow; --i) relay(i, i - up);
     // towards the low end only where it is free thread, not the needle
     const int down = loBefore - loNow;
     const bool lowFree = model.needleLinks() == 0 || piece.first > swage;
-    if (down > 0 && lowFree && !gripped(piece.first, loBefore))
+    if (down > 0 && lowFree && !gripped(piece.first, loBefore) && !touched(piece.first, loBefore))
       for (int i = piece.first; i <= loNow; ++i) relay(i, i + down);
   }
 }
@@ -400,7 +406,8 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     for (const Pierce& p : state.pierces) holesBefore_.push_back(p.node);
     const int slid = slidePierces(model, state, current_, params.slideTolerance, report.events);
     report.slides += slid;
-    if (slid > 0 && name() != "ftl") relayFreeTails(model, state, holesBefore_, current_);
+    if (slid > 0 && name() != "ftl")
+      relayFreeTails(model, state, holesBefore_, current_, selfTouched_);
     std::optional<int> link = findBreak(model, state, current_);
     if (!link && selfPass) link = findKnotBreak(model, state, current_, selfTouched_, selfSkip, h);
     if (link) {
