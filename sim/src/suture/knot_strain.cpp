@@ -41,20 +41,18 @@ std::optional<int> findKnotBreak(const SutureModel& model, SutureState& state,
   const int links = model.linkCount();
   state.heldPastBreak.resize(static_cast<std::size_t>(links), 0.0);
 
-  // the thread links pressed on and past the limit: nearly every substep has none, and then
-  // nothing more is looked at
+  // a thread link's stretch when it is pressed on and past the limit, else 0: nearly every
+  // substep has none, and then nothing more is looked at (the needle is rigid: only thread
+  // links break)
   const double limit = 1.0 + model.def().knotBreakStretch;
-  std::vector<double> stretchOf(static_cast<std::size_t>(links), 0.0);
-  bool any = false;
-  for (int l = model.swage(); l < links; ++l) {
+  const auto overStretched = [&](int l) {
     const auto at = static_cast<std::size_t>(l);
-    if (state.alive[at] == 0 || (pressed[at] == 0 && pressed[at + 1] == 0)) continue;
+    if (l < model.swage() || state.alive[at] == 0 || (pressed[at] == 0 && pressed[at + 1] == 0)) return 0.0;
     const double stretch = (state.x.col(l + 1) - state.x.col(l)).norm() / model.rest(l);
-    if (stretch > limit) {
-      stretchOf[at] = stretch;
-      any = true;
-    }
-  }
+    return stretch > limit ? stretch : 0.0;
+  };
+  bool any = false;
+  for (int l = model.swage(); l < links && !any; ++l) any = overStretched(l) > 0.0;
   if (!any) {
     std::fill(state.heldPastBreak.begin(), state.heldPastBreak.end(), 0.0);
     return std::nullopt;
@@ -73,14 +71,15 @@ std::optional<int> findKnotBreak(const SutureModel& model, SutureState& state,
   for (int l = 0; l < links; ++l) {
     const auto at = static_cast<std::size_t>(l);
     double& held = state.heldPastBreak[at];
-    if (stretchOf[at] == 0.0 || pulled[at] == 0 ||
+    const double stretch = pulled[at] != 0 ? overStretched(l) : 0.0;
+    if (stretch == 0.0 ||
         !pressedFromTheSide(state.x, state.alive, l, skip, 2.0 * model.def().contactRadius)) {
       held = 0.0;
       continue;
     }
     held += seconds;
-    if (held >= kKnotBreakSeconds && stretchOf[at] > worstStretch) {
-      worstStretch = stretchOf[at];
+    if (held >= kKnotBreakSeconds && stretch > worstStretch) {
+      worstStretch = stretch;
       worst = l;
     }
   }
