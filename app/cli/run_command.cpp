@@ -1,6 +1,6 @@
-// `microsim-cli run --scene S [--input REC | --script stitch] [--record REC] [--frames N]
-// [--realtime] [--json OUT]`: builds the scene, feeds it one InputFrame per fixed step (from
-// a recording, from the scripted stitch, or idle hands), and prints the final state hash,
+// `microsim-cli run --scene S [--input REC | --script stitch|back-wall-catch] [--record REC]
+// [--frames N] [--realtime] [--json OUT]`: builds the scene, feeds it one InputFrame per fixed
+// step (from a recording, from a scripted pass, or idle hands), and prints the final state hash,
 // the events and the per-stage step times (median, p99, max). With --input and no --scene,
 // the scene is the one the recording was made on.
 #include "cli/command_line.h"
@@ -10,6 +10,7 @@
 #include "cli/recording_text.h"
 #include "cli/run_report.h"
 #include "cli/spring_scene_input.h"
+#include "microsim/sim/scene/back_wall_catch_script.h"
 #include "microsim/sim/scene/recorded_scene.h"
 #include "microsim/sim/scene/recording.h"
 #include "microsim/sim/scene/scene.h"
@@ -31,7 +32,8 @@ struct RunOptions {
   QCommandLineOption input{QStringLiteral("input"), Cli::tr("Replay the input frames of the recording <file>."),
                            QStringLiteral("file")};
   QCommandLineOption script{QStringLiteral("script"),
-                            Cli::tr("Generate the input instead: 'stitch' (one scripted stitch)."),
+                            Cli::tr("Generate the input instead: 'stitch' (one scripted stitch) or "
+                                    "'back-wall-catch' (a pass that catches the back wall)."),
                             QStringLiteral("name")};
   QCommandLineOption record{QStringLiteral("record"), Cli::tr("Record every input frame to <file>."),
                             QStringLiteral("file")};
@@ -43,8 +45,9 @@ struct RunOptions {
                           QStringLiteral("file")};
 
   QString usage() const {
-    return Cli::tr("Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) "
-                   "[--record REC] [--frames N] [--json OUT]");
+    return Cli::tr(
+        "Usage: microsim-cli run (--scene FILE [--input REC | --script NAME] | --input REC) "
+        "[--record REC] [--frames N] [--json OUT]");
   }
   void declare(CommandLine& line) const { line.addOptions({scene, input, script, record, frames, realtime, json}); }
 };
@@ -53,7 +56,7 @@ struct RunOptions {
 struct RunRequest {
   QString scene;        ///< empty: the one the --input recording names
   QString input;       ///< a recording to replay; empty: none
-  bool script = false;  ///< the scripted stitch
+  QString script;      ///< the scripted pass ("stitch", "back-wall-catch"); empty: none
   QString record;      ///< where to record the frames fed; empty: nowhere
   long long frames = -1;  ///< steps to run; -1: every input frame (100 without input)
   bool realtime = false;
@@ -69,8 +72,10 @@ std::optional<RunRequest> readRunRequest(const CommandLine& line, const RunOptio
     line.usageError(Cli::tr("--input and --script exclude each other"));
     return std::nullopt;
   }
-  if (line.isSet(o.script) && line.value(o.script) != QLatin1String("stitch")) {
-    line.usageError(Cli::tr("unknown script '%1' (known: stitch)").arg(line.value(o.script)));
+  if (line.isSet(o.script) && line.value(o.script) != QLatin1String("stitch") &&
+      line.value(o.script) != QLatin1String("back-wall-catch")) {
+    line.usageError(
+        Cli::tr("unknown script '%1' (known: stitch, back-wall-catch)").arg(line.value(o.script)));
     return std::nullopt;
   }
   RunRequest r;
@@ -84,7 +89,7 @@ std::optional<RunRequest> readRunRequest(const CommandLine& line, const RunOptio
   }
   r.scene = line.value(o.scene);
   r.input = line.value(o.input);
-  r.script = line.isSet(o.script);
+  r.script = line.value(o.script);
   r.record = line.value(o.record);
   r.realtime = line.isSet(o.realtime);
   r.json = line.value(o.json);
@@ -118,8 +123,10 @@ std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& 
   RunInput run{*sceneFile, std::get<sim::SceneDef>(std::move(load)), {}};
   if (replay) {
     run.feed = std::move(replay->recording.frames);
-  } else if (request.script) {
-    run.feed = sim::scriptedStitch(run.scene).frames;
+  } else if (!request.script.isEmpty()) {
+    run.feed = request.script == QLatin1String("stitch")
+                   ? sim::scriptedStitch(run.scene).frames
+                   : sim::scriptedBackWallCatch(run.scene).frames;
     if (run.feed.empty()) {
       exitCode = line.failure(Cli::tr("the stitch script needs a severed vessel, a curved needle and two forceps"));
       return std::nullopt;
@@ -140,7 +147,9 @@ std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& 
 bool openRecord(const CommandLine& line, const RunRequest& request, const QString& sceneFile,
                 sim::RecordingWriter& writer) {
   if (request.record.isEmpty()) return true;
-  const std::string meta = request.script ? nlohmann::json{{"script", "stitch"}}.dump() : std::string();
+  const std::string meta = request.script.isEmpty()
+                               ? std::string()
+                               : nlohmann::json{{"script", request.script.toStdString()}}.dump();
   const sim::RecordingStatus s =
       writer.open(request.record.toStdString(), sim::recordScene(sceneFile.toStdString()), meta);
   if (!s.ok()) line.failure(request.record + QStringLiteral(": ") + recordingErrorText(s.error));

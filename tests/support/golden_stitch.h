@@ -18,4 +18,8 @@ inline constexpr const char* kGoldenStitchHashText = "baa18b501d5cf243";
 inline constexpr double kGoldenStitchScoreNeedleEntry = 95.12413945545076;
 inline constexpr double kGoldenStitchScoreSingleStitch = 48.46959211870074;
 
+/// The state hash of resources/recordings/back_wall_catch.msrec replayed on the same scene,
+/// and its score on 03_single_stitch.json: 0, the back-wall catch being a never-event.
+inline constexpr std::uint64_t kGoldenBackWallCatchHash = 0xe12d7cc45015a50fULL;
+
 }  // namespace microsim::testing

@@ -58,6 +58,39 @@ TEST(RunCommand, TheShippedStitchReplaysToTheGoldenHashWithFourPierces) {
     EXPECT_TRUE(doc.value(QStringLiteral("timings_ms")).toObject().contains(QLatin1String(stage))) << stage;
 }
 
+// The shipped back-wall catch names its scene: `run --input` alone finds it and replays the
+// script's frames (generated again with --script) to the pinned hash.
+TEST(RunCommand, TheBackWallCatchScriptIsTheShippedRecording) {
+  QTemporaryDir dir;
+  const QString shipped = dir.filePath(QStringLiteral("shipped.json"));
+  const QString scripted = dir.filePath(QStringLiteral("scripted.json"));
+  CliRun r = runCli({QStringLiteral("run"), QStringLiteral("--input"),
+                     microsim::testing::kShippedBackWallCatch, QStringLiteral("--json"), shipped});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene,
+              QStringLiteral("--script"), QStringLiteral("back-wall-catch"),
+              QStringLiteral("--json"), scripted});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  const QString hash = QStringLiteral("%1").arg(microsim::testing::kGoldenBackWallCatchHash, 16, 16,
+                                                QLatin1Char('0'));
+  EXPECT_EQ(readRunJson(shipped).value(QStringLiteral("hash")).toString(), hash);
+  EXPECT_EQ(readRunJson(scripted).value(QStringLiteral("hash")).toString(), hash);
+  int pierces = 0;
+  for (const QJsonValue& v : readRunJson(shipped).value(QStringLiteral("events")).toArray())
+    pierces +=
+        v.toObject().value(QStringLiteral("kind")).toString().startsWith(QStringLiteral("pierce-"))
+            ? 1
+            : 0;
+  EXPECT_EQ(pierces, 4);
+
+  r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene,
+              QStringLiteral("--script"), QStringLiteral("knot")});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(
+      r.err.contains(QStringLiteral("unknown script 'knot' (known: stitch, back-wall-catch)")))
+      << r.err.toStdString();
+}
+
 TEST(RunCommand, ARecordedRunReplaysToTheSameHashOnTheSceneItNamesUnlessToldOtherwise) {
   QTemporaryDir dir;
   const QString scene = microsim::testing::copyShippedScene(dir.path(), QStringLiteral("mine.json"));

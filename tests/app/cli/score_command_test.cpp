@@ -113,6 +113,34 @@ TEST(ScoreCommand, TheShippedStitchScoresLesson2sPinnedValue) {
               microsim::testing::kGoldenStitchScoreNeedleEntry, 1e-9);
 }
 
+// The shipped back-wall catch names its scene (found among the shipped ones): the catch is a
+// never-event that caps the score at 0, and the end-product check lists it, with the thread it
+// leaves across the lumen, at the place on the circumference where the back wall was taken.
+TEST(ScoreCommand, TheShippedBackWallCatchIsANeverEventTheEndProductCheckFinds) {
+  QTemporaryDir dir;
+  const QString out = dir.filePath(QStringLiteral("score.json"));
+  const CliRun r = score({QStringLiteral("--recording"), microsim::testing::kShippedBackWallCatch,
+                          QStringLiteral("--json"), out});
+  ASSERT_EQ(r.exitCode, 0) << r.err.toStdString();
+  EXPECT_TRUE(r.out.contains(
+      QStringLiteral("score  0.0  not passed\n  never-event  never.back_wall_catch\n")))
+      << r.out.toStdString();
+  const QJsonObject doc = readScoreJson(out);
+  EXPECT_EQ(doc.value(QStringLiteral("score")).toDouble(), 0.0);
+  const QJsonArray pierces = doc.value(QStringLiteral("pierces")).toArray();
+  ASSERT_EQ(pierces.size(), 2);
+  EXPECT_FALSE(pierces[0].toObject().value(QStringLiteral("back_wall")).toBool());
+  EXPECT_TRUE(pierces[1].toObject().value(QStringLiteral("back_wall")).toBool());
+  QStringList kinds;
+  for (const QJsonValue& e : doc.value(QStringLiteral("end_product")).toArray())
+    kinds << e.toObject().value(QStringLiteral("kind")).toString();
+  EXPECT_TRUE(kinds.contains(QStringLiteral("back_wall_stitch")))
+      << kinds.join(QLatin1Char(' ')).toStdString();
+  EXPECT_TRUE(kinds.contains(QStringLiteral("thread_in_lumen")))
+      << kinds.join(QLatin1Char(' ')).toStdString();
+  EXPECT_TRUE(r.out.contains(QStringLiteral("back-wall stitch"))) << r.out.toStdString();
+}
+
 // writes `rec` to `path`
 bool writeRecording(const QString& path, const microsim::sim::Recording& rec) {
   const std::vector<std::uint8_t> bytes = microsim::sim::encodeRecording(rec);
