@@ -27,6 +27,7 @@ namespace {
 // the conditions that are one count ≥ 1
 std::optional<ConditionKind> countedCondition(const QString& key) {
   if (key == QLatin1String("pierces")) return ConditionKind::Pierces;
+  if (key == QLatin1String("crossings")) return ConditionKind::Crossings;
   if (key == QLatin1String("stitches")) return ConditionKind::Stitches;
   if (key == QLatin1String("throws")) return ConditionKind::Throws;
   if (key == QLatin1String("knots")) return ConditionKind::Knots;

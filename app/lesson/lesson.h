@@ -15,6 +15,8 @@
 //   {"grab": {"min_nodes": N}}           a forceps took hold of at least N tissue nodes
 //   {"stretch_mm": D}                     some tissue node moved at least D mm from rest
 //   {"pierces": N}                        the needle entered a wall at least N times
+//   {"crossings": N}                      the needle crossed the gap N times: entered one end
+//                                         from its lumen after leaving the other
 //   {"stitches": N}                       N stitches: both ends passed through, in turn
 //   {"throws": N}                         N throws formed in the thread (ThrowFormed events)
 //   {"knots": N}                          N knots pulled tight (KnotTightened events)
@@ -46,7 +48,17 @@ struct Text {
   QString in(const QString& language) const;
 };
 
-enum class ConditionKind { Grab, Stretch, Pierces, Stitches, Throws, Knots, Cuts, Target };
+enum class ConditionKind {
+  Grab,
+  Stretch,
+  Pierces,
+  Crossings,
+  Stitches,
+  Throws,
+  Knots,
+  Cuts,
+  Target
+};
 
 struct Condition {
   ConditionKind kind = ConditionKind::Grab;

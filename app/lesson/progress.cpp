@@ -26,6 +26,21 @@ int countStitches(const std::vector<sim::PierceEvent>& pierces) {
   return stitches;
 }
 
+int countCrossings(const std::vector<sim::PierceEvent>& pierces) {
+  int crossings = 0;
+  int leftEnd = -1;  // the end the needle last came out of
+  for (const sim::PierceEvent& p : pierces) {
+    if (p.end != 0 && p.end != 1) continue;
+    if (!p.entry) {
+      leftEnd = p.end;
+    } else if (p.surface == sim::VesselSurface::Inner && leftEnd == 1 - p.end) {
+      ++crossings;
+      leftEnd = -1;
+    }
+  }
+  return crossings;
+}
+
 AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
                           const std::vector<sim::PierceEvent>& pierces, double maxDisplacementMm) {
   AttemptFacts facts;
@@ -46,6 +61,7 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
     if (e.kind == sim::SceneEventKind::ThreadTooShort) facts.threadTooShortMm = e.value;
   }
   facts.stitches = countStitches(pierces);
+  facts.crossings = countCrossings(pierces);
   facts.pierces = pierces;
   return facts;
 }
@@ -65,6 +81,8 @@ bool conditionMet(const Condition& condition, const Lesson& lesson, const Attemp
     case ConditionKind::Grab: return facts.maxGrabNodes >= condition.count;
     case ConditionKind::Stretch: return facts.maxDisplacementMm >= condition.millimetres;
     case ConditionKind::Pierces: return facts.pierceEntries >= condition.count;
+    case ConditionKind::Crossings:
+      return facts.crossings >= condition.count;
     case ConditionKind::Stitches: return facts.stitches >= condition.count;
     case ConditionKind::Throws: return facts.throwsFormed >= condition.count;
     case ConditionKind::Knots: return facts.knotsTightened >= condition.count;

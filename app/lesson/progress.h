@@ -8,6 +8,9 @@
 //   grab      the largest GrabTissue event's node count;
 //   stretch   the largest distance any tissue node has moved from where it started (mm);
 //   pierces   PierceEntry events (the needle entering a wall, from either side);
+//   crossings the needle crossed the gap: entered one end of a severed vessel from its lumen
+//             having last left the other end (a needle that leaves the near end's lumen
+//             through its own back wall has not crossed: a back-wall catch);
 //   stitches  completed passes: the needle went in and out of one end of a severed vessel
 //             and then in and out of the other; a new stitch begins with the next entry;
 //   target i  some pierce point (entry or exit) lies within the tolerance of guides[i];
@@ -33,6 +36,7 @@ struct AttemptFacts {
   int maxGrabNodes = 0;
   double maxDisplacementMm = 0.0;  ///< mm
   int pierceEntries = 0;
+  int crossings = 0;
   int stitches = 0;
   std::vector<sim::PierceEvent> pierces;
   int emptyGraspHand = -1;  ///< see "empty grasp" above
@@ -51,6 +55,8 @@ AttemptFacts collectFacts(const std::vector<sim::SceneEvent>& events,
 
 /// Completed stitches in a pierce sequence (see the header comment).
 int countStitches(const std::vector<sim::PierceEvent>& pierces);
+/// Gap crossings in a pierce sequence (see the header comment).
+int countCrossings(const std::vector<sim::PierceEvent>& pierces);
 
 bool conditionMet(const Condition& condition, const Lesson& lesson, const AttemptFacts& facts);
 

@@ -36,6 +36,35 @@ TEST(LessonProgress, CountsAStitchOnlyWhenBothEndsArePassed) {
             2);
 }
 
+sim::PierceEvent pierce(int end, bool entry, sim::VesselSurface surface) {
+  sim::PierceEvent p = pierce(end, entry);
+  p.surface = surface;
+  return p;
+}
+
+TEST(LessonProgress, AGapIsCrossedByEnteringOneEndFromItsLumenAfterLeavingTheOther) {
+  using S = sim::VesselSurface;
+  // a stitch: out of end 0's lumen, into end 1's
+  EXPECT_EQ(countCrossings({pierce(0, true, S::Outer), pierce(0, false, S::Inner),
+                            pierce(1, true, S::Inner), pierce(1, false, S::Outer)}),
+            1);
+  // a back-wall catch: out of end 0's front wall into its own back wall
+  EXPECT_EQ(countCrossings({pierce(0, true, S::Outer), pierce(0, false, S::Inner),
+                            pierce(0, true, S::Inner), pierce(0, false, S::Outer)}),
+            0);
+  // end 1 entered from outside is no crossing; nor is an entry with no exit before it
+  EXPECT_EQ(countCrossings(
+                {pierce(0, true, S::Outer), pierce(0, false, S::Inner), pierce(1, true, S::Outer)}),
+            0);
+  EXPECT_EQ(countCrossings({pierce(1, true, S::Inner)}), 0);
+  // each crossing needs its own exit: two stitches the other way round cross twice
+  EXPECT_EQ(countCrossings({pierce(1, true, S::Outer), pierce(1, false, S::Inner),
+                            pierce(0, true, S::Inner), pierce(0, false, S::Outer),
+                            pierce(1, true, S::Outer), pierce(1, false, S::Inner),
+                            pierce(0, true, S::Inner)}),
+            2);
+}
+
 Lesson twoSteps() {
   Lesson l;
   l.steps.push_back({{}, {ConditionKind::Grab, 3, 0.0}});
@@ -156,6 +185,28 @@ TEST(LessonProgress, TheShippedStitchCompletesLessonTwoAndTheStitchOfLessonThree
     }
     for (bool hit : guidesHit(lesson, facts, 0.1)) EXPECT_TRUE(hit) << id;
   }
+}
+
+// the shipped back-wall catch pierces twice but never crosses the gap: lesson 3 ticks its
+// first step (the near end pierced) and stops at "enter the far end from the lumen"
+TEST(LessonProgress, TheShippedBackWallCatchDoesNotCrossTheGapOfLessonThree) {
+  sim::Recording recording;
+  ASSERT_TRUE(
+      sim::readRecording(kSource + "/resources/recordings/back_wall_catch.msrec", recording).ok());
+  const auto loaded =
+      loadLesson(QStringLiteral(MICROSIM_SOURCE_DIR "/resources/lessons/03_single_stitch.json"));
+  ASSERT_TRUE(std::holds_alternative<Lesson>(loaded));
+  const Lesson& lesson = std::get<Lesson>(loaded);
+  auto opened = sim::openScene(lesson.scenePath.toStdString());
+  ASSERT_TRUE(std::holds_alternative<std::unique_ptr<sim::Scene>>(opened));
+  sim::Scene& scene = *std::get<std::unique_ptr<sim::Scene>>(opened);
+  for (const sim::InputFrame& f : recording.frames) scene.step(f);
+  const AttemptFacts facts = collectFacts(scene.events(), scene.pierces(), 0.0);
+  EXPECT_EQ(facts.pierceEntries, 2);
+  EXPECT_EQ(facts.crossings, 0);
+  EXPECT_EQ(facts.stitches, 0);
+  EXPECT_EQ(lesson.steps[1].success.kind, ConditionKind::Crossings);
+  EXPECT_EQ(stepsDone(lesson, facts), 1);
 }
 
 }  // namespace
