@@ -105,7 +105,11 @@ QChart* ReviewCharts::metricChart(const QString& title, const QString& unit, con
     high = 1.0;
   }
   const double margin = std::max(0.1 * (high - low), 1e-3 + 0.05 * std::abs(high));
-  y->setRange(low - margin, high + margin);
+  // a quantity that is never negative here (a time, an angle's size, a count) keeps its axis
+  // at or above zero: "-3.1 s" under a row of times reads as a fault; the ticks are made round
+  y->setRange(low >= 0.0 ? std::max(0.0, low - margin) : low - margin, high + margin);
+  y->applyNiceNumbers();
+  if (low >= 0.0 && y->min() < 0.0) y->setMin(0.0);
 
   if (band) {
     // an open end (the side that is never bad) runs to the edge of the chart

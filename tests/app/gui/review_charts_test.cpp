@@ -8,6 +8,7 @@
 #include <QChart>
 #include <QLineSeries>
 #include <QLocale>
+#include <QValueAxis>
 
 #include <gtest/gtest.h>
 
@@ -79,6 +80,30 @@ TEST(ReviewCharts, AMetricGoodWhenHighHasTheBandAboveItsTarget) {
   EXPECT_DOUBLE_EQ(low, 0.8);
   EXPECT_GE(high, 1.0);
   EXPECT_LT(0.5, low);
+}
+
+// Two attempts of 5.4 s against a limit of 60 s: the axis runs from 0 (no negative time under
+// the points) to past the limit, on round ticks
+TEST(ReviewCharts, AnAxisOfValuesThatAreNeverNegativeStartsAtZeroOnRoundTicks) {
+  const assessment::Rubric rubric = rubricWith("time", 60.0, 30.0, assessment::BadSide::Above);
+  std::unique_ptr<QChart> chart(ReviewCharts::metricChart(
+      QStringLiteral("Time"), QStringLiteral("s"), {QPointF(1, 5.4), QPointF(2, 5.4)},
+      targetBand(rubric, QStringLiteral("time")), 2));
+  const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+  ASSERT_NE(y, nullptr);
+  EXPECT_EQ(y->min(), 0.0);
+  EXPECT_GE(y->max(), 90.0);
+  const double step = (y->max() - y->min()) / (y->tickCount() - 1);
+  EXPECT_NEAR(step, std::round(step), 1e-9) << step;
+
+  // a metric that can be negative (smoothness) keeps its negative range
+  std::unique_ptr<QChart> smooth(
+      ReviewCharts::metricChart(QStringLiteral("Smoothness"), QStringLiteral("1"),
+                                {QPointF(1, -14.3), QPointF(2, -8.0)}, std::nullopt, 2));
+  const auto* ys = qobject_cast<QValueAxis*>(smooth->axes(Qt::Vertical).value(0));
+  ASSERT_NE(ys, nullptr);
+  EXPECT_LT(ys->min(), -14.3);
+  EXPECT_GT(ys->max(), -8.0);
 }
 
 TEST(ReviewCharts, AMetricNeverMeasuredInTheShownAttemptsHasNoChart) {
