@@ -20,7 +20,9 @@ namespace {
 QValueAxis* attemptAxis(int count) {
   auto* axis = new QValueAxis;
   axis->setRange(0.5, std::max(count, 1) + 0.5);
-  axis->setLabelFormat(QStringLiteral("%d"));
+  // "%.0f", not "%d": with localised numbers (localisedChart) Qt 6.4 draws no label at all for
+  // "%d" on the axis' real values, and the attempts went unnumbered
+  axis->setLabelFormat(QStringLiteral("%.0f"));
   axis->setTickType(QValueAxis::TicksDynamic);
   axis->setTickAnchor(1);
   axis->setTickInterval(std::max(1, (count + 9) / 10));

@@ -4,8 +4,12 @@
 
 #include "gui/review/trainee_history_view.h"
 
+#include <QAbstractAxis>
+#include <QApplication>
 #include <QAreaSeries>
 #include <QChart>
+#include <QChartView>
+#include <QImage>
 #include <QLineSeries>
 #include <QLocale>
 #include <QValueAxis>
@@ -104,6 +108,33 @@ TEST(ReviewCharts, AnAxisOfValuesThatAreNeverNegativeStartsAtZeroOnRoundTicks) {
   ASSERT_NE(ys, nullptr);
   EXPECT_LT(ys->min(), -14.3);
   EXPECT_GT(ys->max(), -8.0);
+}
+
+// dark pixels in the strip just under the plot area, where an x axis writes its labels
+int darkPixelsUnderThePlot(QChart* chart) {
+  QChartView view(chart);
+  view.resize(400, 300);
+  view.show();
+  QApplication::processEvents();
+  const QImage image = view.grab().toImage();
+  const QRect plot = chart->plotArea().toRect();
+  int dark = 0;
+  for (int y = plot.bottom() + 3; y <= plot.bottom() + 18 && y < image.height(); ++y)
+    for (int x = plot.left(); x <= plot.right(); ++x)
+      dark += qGray(image.pixel(x, y)) < 128 ? 1 : 0;
+  return dark;
+}
+
+// The attempts are numbered under the charts: "1" and "2" written below the plot (with
+// localised numbers, Qt 6.4 wrote nothing for the "%d" label format)
+TEST(ReviewCharts, TheAttemptsAreNumberedUnderTheCharts) {
+  std::unique_ptr<QChart> score(ReviewCharts::scoreChart({40.0, 60.0}, 70.0));
+  score->axes(Qt::Horizontal).value(0)->setTitleVisible(false);
+  EXPECT_GT(darkPixelsUnderThePlot(score.release()), 10);
+  std::unique_ptr<QChart> metric(
+      ReviewCharts::metricChart(QStringLiteral("Time"), QStringLiteral("s"),
+                                {QPointF(1, 5.4), QPointF(2, 6.0)}, std::nullopt, 2));
+  EXPECT_GT(darkPixelsUnderThePlot(metric.release()), 10);
 }
 
 TEST(ReviewCharts, AMetricNeverMeasuredInTheShownAttemptsHasNoChart) {
