@@ -415,8 +415,8 @@
         <translation>Die Eingabebilder der Aufzeichnung &lt;file&gt; abspielen.</translation>
     </message>
     <message>
-        <source>Generate the input instead: 'stitch' (one scripted stitch).</source>
-        <translation>Stattdessen die Eingabe erzeugen: „stitch“ (eine geskriptete Naht).</translation>
+        <source>Generate the input instead: 'stitch' (one scripted stitch) or 'back-wall-catch' (a pass that catches the back wall).</source>
+        <translation>Stattdessen die Eingabe erzeugen: „stitch“ (eine geskriptete Naht) oder „back-wall-catch“ (ein Stich, der die Hinterwand fasst).</translation>
     </message>
     <message>
         <source>Record every input frame to &lt;file&gt;.</source>
@@ -439,8 +439,8 @@
         <translation>--input und --script schließen einander aus</translation>
     </message>
     <message>
-        <source>unknown script '%1' (known: stitch)</source>
-        <translation>unbekanntes Skript „%1“ (bekannt: stitch)</translation>
+        <source>unknown script '%1' (known: stitch, back-wall-catch)</source>
+        <translation>unbekanntes Skript „%1“ (bekannt: stitch, back-wall-catch)</translation>
     </message>
     <message>
         <source>--frames wants a whole number ≥ 0, not '%1'</source>
@@ -455,8 +455,8 @@
         <translation>(bei Byte %1)</translation>
     </message>
     <message>
-        <source>the stitch script needs a severed vessel, a curved needle and two forceps</source>
-        <translation>das Nahtskript braucht ein durchtrenntes Gefäß, eine gebogene Nadel und zwei Pinzetten</translation>
+        <source>the script '%1' needs a severed vessel, a curved needle and two forceps</source>
+        <translation>das Skript „%1“ braucht ein durchtrenntes Gefäß, eine gebogene Nadel und zwei Pinzetten</translation>
     </message>
     <message>
         <source>scene</source>
@@ -1011,8 +1011,8 @@
         <translation>Die auszuführende Szene &lt;file&gt; (Vorgabe mit --input: die, die die Aufzeichnung nennt).</translation>
     </message>
     <message>
-        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Aufruf: microsim-cli run (--scene DATEI [--input AUFZ | --script stitch] | --input AUFZ) [--record AUFZ] [--frames N] [--json AUS]</translation>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script NAME] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Aufruf: microsim-cli run (--scene DATEI [--input AUFZ | --script NAME] | --input AUFZ) [--record AUFZ] [--frames N] [--json AUS]</translation>
     </message>
     <message>
         <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>

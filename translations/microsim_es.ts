@@ -415,8 +415,8 @@
         <translation>Reproducir los fotogramas de entrada de la grabación &lt;file&gt;.</translation>
     </message>
     <message>
-        <source>Generate the input instead: 'stitch' (one scripted stitch).</source>
-        <translation>Generar la entrada en su lugar: «stitch» (un punto programado).</translation>
+        <source>Generate the input instead: 'stitch' (one scripted stitch) or 'back-wall-catch' (a pass that catches the back wall).</source>
+        <translation>Generar la entrada en su lugar: «stitch» (un punto programado) o «back-wall-catch» (un pase que toma la pared posterior).</translation>
     </message>
     <message>
         <source>Record every input frame to &lt;file&gt;.</source>
@@ -439,8 +439,8 @@
         <translation>--input y --script se excluyen mutuamente</translation>
     </message>
     <message>
-        <source>unknown script '%1' (known: stitch)</source>
-        <translation>guion desconocido «%1» (conocido: stitch)</translation>
+        <source>unknown script '%1' (known: stitch, back-wall-catch)</source>
+        <translation>guion desconocido «%1» (conocidos: stitch, back-wall-catch)</translation>
     </message>
     <message>
         <source>--frames wants a whole number ≥ 0, not '%1'</source>
@@ -455,8 +455,8 @@
         <translation>(en el byte %1)</translation>
     </message>
     <message>
-        <source>the stitch script needs a severed vessel, a curved needle and two forceps</source>
-        <translation>el guion del punto necesita un vaso seccionado, una aguja curva y dos pinzas</translation>
+        <source>the script '%1' needs a severed vessel, a curved needle and two forceps</source>
+        <translation>el guion «%1» necesita un vaso seccionado, una aguja curva y dos pinzas</translation>
     </message>
     <message>
         <source>scene</source>
@@ -1011,8 +1011,8 @@
         <translation>La escena &lt;file&gt; que se ejecutará (por defecto con --input: la que indica la grabación).</translation>
     </message>
     <message>
-        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script stitch] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
-        <translation>Uso: microsim-cli run (--scene ARCHIVO [--input GRAB | --script stitch] | --input GRAB) [--record GRAB] [--frames N] [--json SALIDA]</translation>
+        <source>Usage: microsim-cli run (--scene FILE [--input REC | --script NAME] | --input REC) [--record REC] [--frames N] [--json OUT]</source>
+        <translation>Uso: microsim-cli run (--scene ARCHIVO [--input GRAB | --script NOMBRE] | --input GRAB) [--record GRAB] [--frames N] [--json SALIDA]</translation>
     </message>
     <message>
         <source>give --scene FILE, or --input REC to replay it on the scene it was recorded on</source>

@@ -128,7 +128,9 @@ std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& 
                    ? sim::scriptedStitch(run.scene).frames
                    : sim::scriptedBackWallCatch(run.scene).frames;
     if (run.feed.empty()) {
-      exitCode = line.failure(Cli::tr("the stitch script needs a severed vessel, a curved needle and two forceps"));
+      exitCode = line.failure(
+          Cli::tr("the script '%1' needs a severed vessel, a curved needle and two forceps")
+              .arg(request.script));
       return std::nullopt;
     }
   } else {

@@ -81,10 +81,13 @@ QStringList unfinishedEntries(const QString& language) {
     else if (xml.name() == QLatin1String("source")) source = xml.readElementText();
     else if (xml.name() == QLatin1String("translation")) {
       const QString type = xml.attributes().value(QLatin1String("type")).toString();
-      const QString text = xml.readElementText();
+      // a plural's forms are child elements: read them as its text (the default reader stops
+      // at the first, with an error, and the entries after it went unchecked)
+      const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements);
       if (!type.isEmpty() || text.isEmpty()) problems << QStringLiteral("[%1] %2 (%3)").arg(context, source, type);
     }
   }
+  if (xml.hasError()) problems << QStringLiteral("unreadable catalogue: ") + xml.errorString();
   return problems;
 }
 
