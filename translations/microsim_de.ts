@@ -1365,6 +1365,10 @@
         <translation>Die Szene %1 kann nicht geladen werden (Feld %2, Zeile %3).</translation>
     </message>
     <message>
+        <source>Learn mode: each step is ticked off as you do it.</source>
+        <translation>Lernmodus: jeder Schritt wird abgehakt, sobald Sie ihn ausgeführt haben.</translation>
+    </message>
+    <message>
         <source>Learn mode: follow the marks.</source>
         <translation>Lernmodus: folgen Sie den Markierungen.</translation>
     </message>

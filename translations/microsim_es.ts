@@ -1365,6 +1365,10 @@
         <translation>No se puede cargar la escena %1 (campo %2, línea %3).</translation>
     </message>
     <message>
+        <source>Learn mode: each step is ticked off as you do it.</source>
+        <translation>Modo aprendizaje: cada paso se marca en cuanto lo realiza.</translation>
+    </message>
+    <message>
         <source>Learn mode: follow the marks.</source>
         <translation>Modo aprendizaje: siga las marcas.</translation>
     </message>

@@ -143,8 +143,14 @@ bool AttemptPage::begin(const lesson::Lesson& lesson, int lessonIndex, assessmen
   connect(manual_, &tracking::TrackerSource::frameReady, session_->runner(), &SimulationRunner::submitFrame);
 
   title_->setText(QStringLiteral("<h3>%1</h3>").arg(lesson.title.in(language).toHtmlEscaped()));
-  mode_->setText(mode == assessment::AttemptMode::Learn ? tr("Learn mode: follow the marks.")
-                                                        : tr("Test mode: graded, no hints."));
+  // Learn mode draws the lesson's marks; a lesson without any (the instrument tie) still
+  // ticks its steps off as they are done
+  if (mode != assessment::AttemptMode::Learn)
+    mode_->setText(tr("Test mode: graded, no hints."));
+  else if (lesson.guides.empty())
+    mode_->setText(tr("Learn mode: each step is ticked off as you do it."));
+  else
+    mode_->setText(tr("Learn mode: follow the marks."));
   steps_->clear();
   for (const lesson::Step& s : lesson.steps) steps_->addItem(s.instruction.in(language));
   status_->setText(setup.historyLocation.isEmpty() || viewer.userId == 0
