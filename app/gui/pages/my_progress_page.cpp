@@ -10,7 +10,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -42,17 +41,11 @@ MyProgressPage::MyProgressPage(QString historyLocation, QWidget* parent)
   message_->setObjectName(QStringLiteral("progressMessage"));
   message_->setWordWrap(true);
 
-  // the charts need more height than a small screen has: they scroll instead of growing the window
+  // the view scrolls its charts itself (trainee_history_view.cpp)
   historyView_ = new TraineeHistoryView;
-  // the score chart keeps room for its title, legend and axis labels when the page scrolls
-  historyView_->scoreChartView()->setMinimumHeight(320);
-  auto* historyScroll = new QScrollArea;
-  historyScroll->setWidgetResizable(true);
-  historyScroll->setFrameShape(QFrame::NoFrame);
-  historyScroll->setWidget(historyView_);
   detailView_ = new AttemptDetailView;
   tabs_ = new QTabWidget(this);
-  tabs_->addTab(historyScroll, tr("Scores"));
+  tabs_->addTab(historyView_, tr("Scores"));
   tabs_->addTab(detailView_, tr("Attempt"));
 
   auto* layout = new QVBoxLayout(this);

@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -42,6 +43,9 @@ QTableWidgetItem* item(const QString& text, qint64 attemptId) {
 
 TraineeHistoryView::TraineeHistoryView(QWidget* parent) : QWidget(parent) {
   scoreView_ = makeView();
+  // the score chart keeps room for its title, legend and numbered axis however many metric
+  // charts follow (squeezed to a third of the instructor's page, its labels were elided to "…")
+  scoreView_->setMinimumHeight(320);
   auto* charts = new QWidget;
   chartGrid_ = new QGridLayout(charts);
   chartGrid_->setContentsMargins(0, 0, 0, 0);
@@ -51,6 +55,10 @@ TraineeHistoryView::TraineeHistoryView(QWidget* parent) : QWidget(parent) {
   table_->setHorizontalHeaderLabels({tr("Attempt"), tr("Finished"), tr("Mode"), tr("Score"), tr("Passed")});
   table_->horizontalHeader()->setStretchLastSection(true);
   table_->verticalHeader()->hide();
+  // three attempts stay readable under the charts however the splitter shares the height
+  table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                           3 * table_->verticalHeader()->defaultSectionSize() +
+                           2 * table_->frameWidth());
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   connect(table_, &QTableWidget::cellActivated, this, [this](int row, int) {
@@ -60,8 +68,13 @@ TraineeHistoryView::TraineeHistoryView(QWidget* parent) : QWidget(parent) {
   emptyLabel_ = new QLabel(tr("No finished attempts in this lesson yet."));
   emptyLabel_->setAlignment(Qt::AlignCenter);
 
+  // the charts need more height than a page has: they scroll above the attempts, which stay
+  auto* chartScroll = new QScrollArea;
+  chartScroll->setWidgetResizable(true);
+  chartScroll->setFrameShape(QFrame::NoFrame);
+  chartScroll->setWidget(charts);
   auto* splitter = new QSplitter(Qt::Vertical);
-  splitter->addWidget(charts);
+  splitter->addWidget(chartScroll);
   splitter->addWidget(table_);
   splitter->setStretchFactor(0, 3);
   splitter->setStretchFactor(1, 1);
@@ -115,6 +128,9 @@ void TraineeHistoryView::setHistory(const QList<assessment::AttemptSummary>& fin
     table_->setItem(i, 3, item(locale.toString(a.score.value_or(0.0), 'f', 1), a.id));
     table_->setItem(i, 4, item(a.passed ? tr("yes") : tr("no"), a.id));
   }
+  // a date on one line, not wrapped in a column sized for a number
+  for (int column = 0; column + 1 < table_->columnCount(); ++column)
+    table_->resizeColumnToContents(column);
 }
 
 QChart* TraineeHistoryView::scoreChart() const { return scoreView_->chart(); }

@@ -12,6 +12,7 @@
 #include <QImage>
 #include <QLineSeries>
 #include <QLocale>
+#include <QTableWidget>
 #include <QValueAxis>
 
 #include <gtest/gtest.h>
@@ -165,6 +166,35 @@ TEST(ReviewCharts, AMetricNeverMeasuredInTheShownAttemptsHasNoChart) {
   // shown again with no attempts at all: no metric charts remain
   view.setHistory({}, {}, &rubric);
   EXPECT_TRUE(view.metricCharts().isEmpty());
+}
+
+// The history at the size an instructor's page gives it, with every key metric measured: the
+// score chart keeps room for its plot (it had a third of the height, a 40-pixel plot and its
+// attempt numbers elided to "…"), the metric charts scroll, and the attempts stay in view
+TEST(ReviewCharts, TheScoreChartKeepsItsRoomWhenEveryMetricHasAChart) {
+  QList<assessment::AttemptSummary> finished(2);
+  QList<QList<assessment::StoredMetric>> metrics(2);
+  for (int i = 0; i < 2; ++i) {
+    finished[i].id = i + 1;
+    finished[i].score = 40.0 + 20.0 * i;
+    for (const char* key : {"entry_angle", "bite_walls", "time", "path_length"}) {
+      assessment::StoredMetric m;
+      m.key = QLatin1String(key);
+      m.value = 1.0 + i;
+      metrics[i] << m;
+    }
+  }
+  const assessment::Rubric rubric = rubricWith("time", 300.0, 60.0, assessment::BadSide::Above);
+  TraineeHistoryView view;
+  view.setHistory(finished, metrics, &rubric);
+  view.resize(1000, 600);
+  view.show();
+  QApplication::processEvents();
+  ASSERT_EQ(view.metricCharts().size(), 4);
+  EXPECT_GE(view.scoreChart()->plotArea().height(), 150.0);
+  EXPECT_GE(view.attemptsTable()->height(), 100);
+  for (QChart* chart : view.metricCharts())
+    EXPECT_GE(chart->plotArea().height(), 80.0) << chart->objectName().toStdString();
 }
 
 TEST(ReviewCharts, AxesWriteNumbersInTheInterfacesLocale) {
