@@ -8,8 +8,9 @@ namespace microsim::sim {
 
 namespace {
 
-/// How far past the catch the forceps turns the needle before it draws the thread: the
-/// needle (a 3/8 circle, 135°) is then wholly out, its swage 25° past the back wall.
+/// How far past the hand-over the forceps turns the needle before it draws the thread: the
+/// needle (a 3/8 circle, 135°) is then wholly out, its swage clearDeg + 115° − 135° (20° with
+/// the default def) past where the tip left the back wall.
 constexpr double kNeedleOutPastHandOverDeg = 115.0;
 
 struct Catch {
