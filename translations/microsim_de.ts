@@ -439,8 +439,8 @@
         <translation>--input und --script schließen einander aus</translation>
     </message>
     <message>
-        <source>unknown script '%1' (known: stitch, back-wall-catch)</source>
-        <translation>unbekanntes Skript „%1“ (bekannt: stitch, back-wall-catch)</translation>
+        <source>unknown script '%1' (known: %2)</source>
+        <translation>unbekanntes Skript „%1“ (bekannt: %2)</translation>
     </message>
     <message>
         <source>--frames wants a whole number ≥ 0, not '%1'</source>

@@ -439,8 +439,8 @@
         <translation>--input y --script se excluyen mutuamente</translation>
     </message>
     <message>
-        <source>unknown script '%1' (known: stitch, back-wall-catch)</source>
-        <translation>guion desconocido «%1» (conocidos: stitch, back-wall-catch)</translation>
+        <source>unknown script '%1' (known: %2)</source>
+        <translation>guion desconocido «%1» (conocidos: %2)</translation>
     </message>
     <message>
         <source>--frames wants a whole number ≥ 0, not '%1'</source>

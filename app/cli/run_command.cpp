@@ -18,12 +18,31 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <string>
 #include <vector>
 
 namespace microsim::cli {
 
 namespace {
+
+// the inputs --script generates, by name: each a scene's frames, empty when the scene lacks
+// what the script needs (a severed vessel, a curved needle, two forceps)
+struct ScriptedInput {
+  const char* name;
+  sim::Recording (*frames)(const sim::SceneDef&);
+};
+constexpr std::array<ScriptedInput, 2> kScriptedInputs{{
+    {"stitch", [](const sim::SceneDef& scene) { return sim::scriptedStitch(scene); }},
+    {"back-wall-catch",
+     [](const sim::SceneDef& scene) { return sim::scriptedBackWallCatch(scene); }},
+}};
+
+const ScriptedInput* scriptedInput(const QString& name) {
+  for (const ScriptedInput& s : kScriptedInputs)
+    if (name == QLatin1String(s.name)) return &s;
+  return nullptr;
+}
 
 struct RunOptions {
   QCommandLineOption scene{QStringLiteral("scene"),
@@ -72,10 +91,11 @@ std::optional<RunRequest> readRunRequest(const CommandLine& line, const RunOptio
     line.usageError(Cli::tr("--input and --script exclude each other"));
     return std::nullopt;
   }
-  if (line.isSet(o.script) && line.value(o.script) != QLatin1String("stitch") &&
-      line.value(o.script) != QLatin1String("back-wall-catch")) {
-    line.usageError(
-        Cli::tr("unknown script '%1' (known: stitch, back-wall-catch)").arg(line.value(o.script)));
+  if (line.isSet(o.script) && !scriptedInput(line.value(o.script))) {
+    QStringList known;
+    for (const ScriptedInput& s : kScriptedInputs) known << QLatin1String(s.name);
+    line.usageError(Cli::tr("unknown script '%1' (known: %2)")
+                        .arg(line.value(o.script), known.join(QStringLiteral(", "))));
     return std::nullopt;
   }
   RunRequest r;
@@ -124,9 +144,7 @@ std::optional<RunInput> loadRunInput(const CommandLine& line, const RunRequest& 
   if (replay) {
     run.feed = std::move(replay->recording.frames);
   } else if (!request.script.isEmpty()) {
-    run.feed = request.script == QLatin1String("stitch")
-                   ? sim::scriptedStitch(run.scene).frames
-                   : sim::scriptedBackWallCatch(run.scene).frames;
+    run.feed = scriptedInput(request.script)->frames(run.scene).frames;
     if (run.feed.empty()) {
       exitCode = line.failure(
           Cli::tr("the script '%1' needs a severed vessel, a curved needle and two forceps")

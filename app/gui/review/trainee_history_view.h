@@ -33,8 +33,6 @@ class TraineeHistoryView : public QWidget {
   /// each chart's object name is its metric key.
   QList<QChart*> metricCharts() const;
   QTableWidget* attemptsTable() const { return table_; }
-  /// The score chart's view, to render it elsewhere (the PDF report).
-  QChartView* scoreChartView() const { return scoreView_; }
 
  Q_SIGNALS:
   void attemptChosen(qint64 attemptId);

@@ -83,6 +83,17 @@ TEST(RunCommand, TheBackWallCatchScriptIsTheShippedRecording) {
             : 0;
   EXPECT_EQ(pierces, 4);
 
+  // a scene without a severed vessel has no catch to script: named, and nothing is run
+  r = runCli(
+      {QStringLiteral("run"), QStringLiteral("--scene"),
+       microsim::testing::kSourceRoot + QStringLiteral("/resources/scenes/single_vessel.json"),
+       QStringLiteral("--script"), QStringLiteral("back-wall-catch")});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.err.contains(QStringLiteral(
+      "the script 'back-wall-catch' needs a severed vessel, a curved needle and two forceps")))
+      << r.err.toStdString();
+  EXPECT_FALSE(r.out.contains(QStringLiteral("state hash"))) << r.out.toStdString();
+
   r = runCli({QStringLiteral("run"), QStringLiteral("--scene"), kShippedScene,
               QStringLiteral("--script"), QStringLiteral("knot")});
   EXPECT_EQ(r.exitCode, 2);
