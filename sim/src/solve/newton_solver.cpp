@@ -25,6 +25,7 @@
 #include "microsim/sim/solve/spring_kernels.h"
 #include "solve/block_ldlt.h"
 #include "solve/block_system.h"
+#include "solve/link_terms.h"
 #include "solve/multigrid.h"
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
@@ -110,6 +111,7 @@ class NewtonSolver final : public TissueSolver {
     const Points v0 = state.v;
     const bool cacheValid = cacheMatches(model, state.x);
     applyControls(model, state, controls);
+    terms_.invalidate(model.linkCount());
     Points& x = state.x;
 
     const std::vector<unsigned char> lastFree = std::move(free_);
@@ -299,7 +301,7 @@ class NewtonSolver final : public TissueSolver {
     for (int li : model.linksOf(i)) {
       const Link& link = model.link(li);
       if (!link.alive) continue;
-      const Vec3 fl = linkForce(link, x.col(link.a), x.col(link.b));
+      const Vec3 fl = terms_.force(model, x, li);
       f += link.a == i ? fl : Vec3(-fl);
     }
     for (int e = springStart_[static_cast<std::size_t>(i)];
@@ -352,7 +354,7 @@ class NewtonSolver final : public TissueSolver {
         if (!link.alive) continue;
         const int j = model.otherEnd(li, i);
         if (local_[j] >= 0 && j < i) continue;  // counted from j
-        e += linkEnergy(link, x.col(link.a), x.col(link.b));
+        e += terms_.energy(model, x, li);
       }
       e -= model.mass(i) * model.gravity.dot(x.col(i));
     }
@@ -380,7 +382,7 @@ class NewtonSolver final : public TissueSolver {
         const int j = model.otherEnd(li, i);
         const int s = local_[j];
         if (s >= 0 && j < i) continue;
-        const Eigen::Matrix3d h = linkHessian(link, x.col(i), x.col(j), clamp);
+        const Eigen::Matrix3d h = terms_.hessian(model, x, li, i, j, clamp);
         system_.diag[r] += h;
         if (s >= 0) {
           system_.diag[s] += h;
@@ -501,6 +503,7 @@ class NewtonSolver final : public TissueSolver {
     for (int attempt = 0; attempt < 30; ++attempt, t *= 0.5) {
       for (int r = 0; r < m; ++r)
         x.col(region_[r]) = start_.col(r) + t * direction_.segment<3>(3 * r);
+      terms_.invalidate(model.linkCount());
       const double e = regionEnergy(model, x);
       if (e <= e0 - 1e-4 * t * slope) return true;
       if (std::abs(e - e0) <= 1e-12 * (std::abs(e0) + 1.0)) {
@@ -510,6 +513,7 @@ class NewtonSolver final : public TissueSolver {
       }
     }
     for (int r = 0; r < m; ++r) x.col(region_[r]) = start_.col(r);
+    terms_.invalidate(model.linkCount());
     return false;
   }
 
@@ -556,6 +560,7 @@ class NewtonSolver final : public TissueSolver {
   std::vector<int> boundaryOut_, seen_;
   int growths_ = 0;
   Eigen::VectorXd force_, direction_;
+  mutable LinkTerms terms_;  ///< the links' spring terms at x, until a node moves
   Points start_;
   BlockSystem system_;
   // the direct path: the region's Hessian factorised, and for which region

@@ -168,5 +168,23 @@ TEST(SpringKernels, TotalsAndRelativeResidual) {
   EXPECT_DOUBLE_EQ(forceScale(model, SpringControls{}), 9810.0);
 }
 
+// springTerms is springTension and springEnergy in one call: the same bits, for every law, on both
+// sides of rest, of the series' switch, and of the exponential's knee
+TEST(SpringKernels, SpringTermsGiveTheSeparateKernelsToTheBit) {
+  const double k = 3.7, r = 0.13;
+  const Stiffening laws[] = {{}, {0.0, 6.0 / r}, {40.0 / (r * r), 0.0}, {0.0, 400.0 / r}};
+  for (const Stiffening& c : laws) {
+    const double knee = c.beta > 0.0 ? detail::springExpKnee(r, c.beta) : 1.0;
+    const double switchAt = c.beta > 0.0 ? detail::kSeriesBelow / c.beta : 0.0;
+    for (const double l :
+         {0.0, 0.5 * r, r, r + 1e-9, r + switchAt * (1 - 1e-9), r + switchAt,
+          r + switchAt * (1 + 1e-9), 1.3 * r, r + knee, r + knee * (1 + 1e-9), 9.0 * r}) {
+      const SpringTerms t = springTerms(k, r, c, l);
+      EXPECT_EQ(t.tension, springTension(k, r, c, l)) << "length " << l << " beta " << c.beta;
+      EXPECT_EQ(t.energy, springEnergy(k, r, c, l)) << "length " << l << " beta " << c.beta;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace microsim::sim

@@ -92,9 +92,11 @@ inline double springExpKnee(double rest, double beta) {
 
 /// Exponential law for x = βΔ ≥ 0: e^x − 1 and e^x − 1 − x, the latter by its series for
 /// small x, where the difference would cancel.
+inline constexpr double kSeriesBelow = 1e-2;
 inline double springExpm1(double x) { return std::expm1(x); }
 inline double springExpm1MinusX(double x) {
-  if (x < 1e-2) return x * x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 + x / 720.0))));
+  if (x < kSeriesBelow)
+    return x * x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 + x / 720.0))));
   return std::expm1(x) - x;
 }
 
@@ -136,6 +138,33 @@ inline double springEnergy(double k, double rest, const Stiffening& c, double le
   return k * (0.5 * d * d + 0.25 * c.c * dp2 * dp2);
 }
 
+/// T and E of one spring at one length, as springTension and springEnergy give them to the
+/// bit, from one e^x − 1 (the two calls make two or three): what a Newton iteration needs
+/// of a link at every position it tries. T' (springTensionDerivative, one e^x) only the
+/// positions it goes on from need.
+struct SpringTerms {
+  double tension = 0.0;  ///< T (µN)
+  double energy = 0.0;   ///< E (nJ)
+};
+
+inline SpringTerms springTerms(double k, double rest, const Stiffening& c, double length) {
+  const double d = length - rest;
+  if (c.beta > 0.0 && d > 0.0) {
+    const double knee = detail::springExpKnee(rest, c.beta);
+    const double x = c.beta * std::min(d, knee);
+    const double em1 = detail::springExpm1(x);
+    const double t = k * em1 / c.beta;
+    const double e =
+        k * (x < detail::kSeriesBelow ? detail::springExpm1MinusX(x) : em1 - x) / (c.beta * c.beta);
+    if (d <= knee) return {t, e};
+    const double over = d - knee;
+    const double slope = k * std::exp(x);  // x is at the knee
+    return {t + slope * over, e + t * over + 0.5 * slope * over * over};
+  }
+  const double dp = std::max(d, 0.0);
+  return {k * d * (1.0 + c.c * dp * dp), k * (0.5 * d * d + 0.25 * c.c * (dp * dp) * (dp * dp))};
+}
+
 /// T / l, the factor that turns x_b − x_a into the force on a (g/s²). Finite for l → 0
 /// only for zero-rest links; callers handle length < kMinLength themselves.
 inline double springTensionOverLength(double k, double rest, const Stiffening& c, double length) {
@@ -156,19 +185,26 @@ inline double linkEnergy(const Link& link, const Vec3& xa, const Vec3& xb) {
 }
 
 /// ∂²E/∂x_a² of one spring (3 by 3, g/s²); `clamp` projects it to PSD (see above).
-inline Eigen::Matrix3d springHessian(double k, double rest, const Stiffening& c, const Vec3& xa,
-                                     const Vec3& xb, bool clamp) {
-  const Vec3 d = xb - xa;
-  const double l = d.norm();
-  if (l < kMinLength) return k * Eigen::Matrix3d::Identity();
+/// The same from T' and T / l known at the length l = |d| ≥ kMinLength, d = x_b − x_a.
+inline Eigen::Matrix3d springHessianOf(double derivative, double tensionOverLength, const Vec3& d,
+                                       double l, bool clamp) {
   const Vec3 u = d / l;
-  double t = springTensionDerivative(k, rest, c, l);
-  double s = springTensionOverLength(k, rest, c, l);
+  double t = derivative;
+  double s = tensionOverLength;
   if (clamp) {
     t = std::max(t, 0.0);
     s = std::max(s, 0.0);
   }
   return (t - s) * (u * u.transpose()) + s * Eigen::Matrix3d::Identity();
+}
+
+inline Eigen::Matrix3d springHessian(double k, double rest, const Stiffening& c, const Vec3& xa,
+                                     const Vec3& xb, bool clamp) {
+  const Vec3 d = xb - xa;
+  const double l = d.norm();
+  if (l < kMinLength) return k * Eigen::Matrix3d::Identity();
+  return springHessianOf(springTensionDerivative(k, rest, c, l),
+                         springTensionOverLength(k, rest, c, l), d, l, clamp);
 }
 
 inline Eigen::Matrix3d linkHessian(const Link& link, const Vec3& xa, const Vec3& xb,
