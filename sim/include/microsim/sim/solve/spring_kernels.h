@@ -47,6 +47,7 @@
 // Units: positions mm, k0 g/s² (force per mm), force g·mm/s² (µN), energy g·mm²/s² (nJ).
 
 #include "microsim/sim/mesh/spring_model.h"
+#include "microsim/sim/solve/exponential.h"
 
 #include <Eigen/Core>
 
@@ -93,11 +94,13 @@ inline double springExpKnee(double rest, double beta) {
 /// Exponential law for x = βΔ ≥ 0: e^x − 1 and e^x − 1 − x, the latter by its series for
 /// small x, where the difference would cancel.
 inline constexpr double kSeriesBelow = 1e-2;
-inline double springExpm1(double x) { return std::expm1(x); }
+inline double springExpm1(double x) {
+  return exponentialMinusOne(x);
+}
 inline double springExpm1MinusX(double x) {
   if (x < kSeriesBelow)
     return x * x * (0.5 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 + x / 720.0))));
-  return std::expm1(x) - x;
+  return exponentialMinusOne(x) - x;
 }
 
 }  // namespace detail
@@ -108,7 +111,7 @@ inline double springTension(double k, double rest, const Stiffening& c, double l
   if (c.beta > 0.0 && d > 0.0) {
     const double knee = detail::springExpKnee(rest, c.beta);
     const double t = k * detail::springExpm1(c.beta * std::min(d, knee)) / c.beta;
-    return d > knee ? t + k * std::exp(c.beta * knee) * (d - knee) : t;
+    return d > knee ? t + k * detail::exponential(c.beta * knee) * (d - knee) : t;
   }
   const double dp = std::max(d, 0.0);
   return k * d * (1.0 + c.c * dp * dp);
@@ -118,7 +121,7 @@ inline double springTension(double k, double rest, const Stiffening& c, double l
 inline double springTensionDerivative(double k, double rest, const Stiffening& c, double length) {
   const double d = length - rest;
   if (c.beta > 0.0 && d > 0.0)
-    return k * std::exp(c.beta * std::min(d, detail::springExpKnee(rest, c.beta)));
+    return k * detail::exponential(c.beta * std::min(d, detail::springExpKnee(rest, c.beta)));
   const double dp = std::max(d, 0.0);
   return k * (1.0 + 3.0 * c.c * dp * dp);
 }
@@ -132,7 +135,7 @@ inline double springEnergy(double k, double rest, const Stiffening& c, double le
     if (d <= knee) return e;
     const double t = k * detail::springExpm1(c.beta * knee) / c.beta;
     const double over = d - knee;
-    return e + t * over + 0.5 * k * std::exp(c.beta * knee) * over * over;
+    return e + t * over + 0.5 * k * detail::exponential(c.beta * knee) * over * over;
   }
   const double dp2 = std::max(d, 0.0) * std::max(d, 0.0);
   return k * (0.5 * d * d + 0.25 * c.c * dp2 * dp2);
@@ -158,7 +161,7 @@ inline SpringTerms springTerms(double k, double rest, const Stiffening& c, doubl
         k * (x < detail::kSeriesBelow ? detail::springExpm1MinusX(x) : em1 - x) / (c.beta * c.beta);
     if (d <= knee) return {t, e};
     const double over = d - knee;
-    const double slope = k * std::exp(x);  // x is at the knee
+    const double slope = k * detail::exponential(x);  // x is at the knee
     return {t + slope * over, e + t * over + 0.5 * slope * over * over};
   }
   const double dp = std::max(d, 0.0);
