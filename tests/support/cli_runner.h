@@ -14,13 +14,16 @@ struct CliRun {
   QString err;
 };
 
-/// Runs microsim-cli with `args`; `input`, when given, is written to its stdin (then closed).
-inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QByteArray& input = {}) {
+/// Runs microsim-cli with `args`; `input`, when given, is written to its stdin (then closed);
+/// `environment` adds or replaces variables of the test's own.
+inline CliRun runCli(const QStringList& args, int timeoutMs = 120000, const QByteArray& input = {},
+                     const QProcessEnvironment& environment = {}) {
   QProcess p;
   // English messages whatever the machine's locale, so tests can match them
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
   env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));
   env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
+  env.insert(environment);
   p.setProcessEnvironment(env);
   p.start(QStringLiteral(MICROSIM_CLI_PATH), args);
   CliRun r;
