@@ -51,6 +51,7 @@ AttemptPage::AttemptPage(assessment::HistoryDatabase* history, QWidget* parent)
   title_->setWordWrap(true);
   mode_ = new QLabel(this);
   mode_->setObjectName(QStringLiteral("attemptMode"));
+  mode_->setWordWrap(true);  // the Learn-mode line is longer than the side panel is wide
   steps_ = new QListWidget(this);
   steps_->setObjectName(QStringLiteral("stepList"));
   steps_->setWordWrap(true);

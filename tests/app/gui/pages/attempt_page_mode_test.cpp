@@ -1,6 +1,7 @@
 // What the attempt page says of Learn mode, at the real window: "follow the marks" where the
 // lesson draws marks (lesson 2's entry targets), that the steps tick off where it draws none
-// (the instrument tie, whose stitch is already placed).
+// (the instrument tie, whose stitch is already placed); and the whole line is shown, not cut
+// off at the side panel's edge.
 #include <QLabel>
 
 #include "app/gui/lesson_at_window.h"
@@ -10,16 +11,29 @@
 namespace microsim::gui {
 namespace {
 
-QString learnModeLine(int row) {
+struct ModeLine {
+  QString text;
+  bool shownWhole = false;
+};
+
+ModeLine learnModeLine(int row) {
   const testing::LessonAtWindow app(row, QStringLiteral("Mode Reader"));
   const auto* line = app.window->findChild<QLabel*>(QStringLiteral("attemptMode"));
-  return line ? line->text() : QString();
+  if (!line) return {};
+  // wrapped, its lines fit the label's height; on one line, the text fits its width
+  const bool whole = line->wordWrap() ? line->heightForWidth(line->width()) <= line->height()
+                                      : line->fontMetrics().horizontalAdvance(line->text()) <=
+                                            line->contentsRect().width();
+  return {line->text(), whole};
 }
 
 TEST(AttemptPageMode, LearnModeSaysToFollowTheMarksOnlyWhereThereAreMarks) {
-  EXPECT_EQ(learnModeLine(1), QStringLiteral("Learn mode: follow the marks."));  // 02 needle entry
-  EXPECT_EQ(learnModeLine(2),
-            QStringLiteral("Learn mode: each step is ticked off as you do it."));  // 02b
+  const ModeLine entry = learnModeLine(1);  // 02 needle entry
+  EXPECT_EQ(entry.text, QStringLiteral("Learn mode: follow the marks."));
+  EXPECT_TRUE(entry.shownWhole);
+  const ModeLine tie = learnModeLine(2);  // 02b
+  EXPECT_EQ(tie.text, QStringLiteral("Learn mode: each step is ticked off as you do it."));
+  EXPECT_TRUE(tie.shownWhole) << "cut off at the side panel's edge";
 }
 
 }  // namespace
