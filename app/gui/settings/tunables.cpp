@@ -39,12 +39,21 @@ std::vector<Tunable> Tunables::all() {
                    {{QStringLiteral("mm"), tr("Millimetres")}, {QStringLiteral("um"), tr("Micrometres")}},
                    0, 0, QStringLiteral("mm"), tr("Length units"),
                    tr("Units of lengths on the results page."), false});
-  table.push_back({i18n::languageSettingKey(), Type::Choice,
+  // each language named in itself and never translated, as language lists do, so that whoever
+  // cannot read the interface's present language still finds their own (QLocale's native names
+  // say "American English")
+  table.push_back({i18n::languageSettingKey(),
+                   Type::Choice,
                    {{QString(), tr("System default")},
-                    {QStringLiteral("en"), tr("English")},
-                    {QStringLiteral("de"), tr("German")},
-                    {QStringLiteral("es"), tr("Spanish")}},
-                   0, 0, QString(), tr("Language"), tr("The interface language."), true});
+                    {QStringLiteral("en"), QStringLiteral("English")},
+                    {QStringLiteral("de"), QStringLiteral("Deutsch")},
+                    {QStringLiteral("es"), QString::fromUtf8("Español")}},
+                   0,
+                   0,
+                   QString(),
+                   tr("Language"),
+                   tr("The interface language."),
+                   true});
   return table;
 }
 

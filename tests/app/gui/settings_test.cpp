@@ -2,15 +2,17 @@
 #include "gui/settings/scene_overrides.h"
 #include "gui/settings/settings_dialog.h"
 #include "gui/settings/tunables.h"
+#include "i18n/translations.h"
 
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/scene/scene_def.h"
 #include "support/shipped_files.h"
 
 #include <QComboBox>
+#include <QJsonObject>
 #include <QSettings>
 #include <QSpinBox>
-#include <QJsonObject>
+#include <QTranslator>
 
 #include <algorithm>
 #include <variant>
@@ -44,6 +46,41 @@ TEST(Settings, TheDialogHasAnEditorForEveryTunable) {
   }
   for (const QString& key : {solverKey(), iterationsKey(), stereoKey(), keyMapKey(), unitsKey()})
     EXPECT_NE(dialog.editor(key), nullptr) << key.toStdString();
+}
+
+// The language list names each language in itself, whatever the interface's language, so a
+// trainee who cannot read the present one still finds their own; "System default" is
+// translated like every other label.
+std::vector<QString> languageLabels() {
+  for (const Tunable& t : Tunables::all()) {
+    if (t.key != i18n::languageSettingKey()) continue;
+    std::vector<QString> labels;
+    for (const Choice& c : t.choices) labels.push_back(c.label);
+    return labels;
+  }
+  return {};
+}
+
+TEST(Settings, TheLanguagesAreNamedInThemselvesInEveryInterfaceLanguage) {
+  const std::vector<QString> english = languageLabels();
+  ASSERT_EQ(english.size(), 4U);
+  EXPECT_EQ(english[0], QStringLiteral("System default"));
+  const std::vector<QString> names{QStringLiteral("English"), QStringLiteral("Deutsch"),
+                                   QString::fromUtf8("Español")};
+  for (const QString& interface : {QStringLiteral("de"), QStringLiteral("es")}) {
+    QTranslator translator;
+    ASSERT_TRUE(translator.load(QStringLiteral(":/i18n/microsim_") + interface));
+    QCoreApplication::installTranslator(&translator);
+    const std::vector<QString> shown = languageLabels();
+    QCoreApplication::removeTranslator(&translator);
+    ASSERT_EQ(shown.size(), 4U);
+    EXPECT_NE(shown[0], english[0])
+        << interface.toStdString() << ": \"System default\" untranslated";
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      EXPECT_EQ(shown[k + 1], names[k]) << interface.toStdString();
+      EXPECT_EQ(english[k + 1], names[k]);
+    }
+  }
 }
 
 TEST(Settings, StoresWhatTheDialogShowsAndChecksRanges) {
