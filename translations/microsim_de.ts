@@ -1778,6 +1778,10 @@
         <translation>Mehr Nähte als nötig.</translation>
     </message>
     <message>
+        <source>Counts only once part of the task is done.</source>
+        <translation>Zählt erst, wenn ein Teil der Aufgabe erledigt ist.</translation>
+    </message>
+    <message>
         <source>Work faster.</source>
         <translation>Arbeiten Sie zügiger.</translation>
     </message>
@@ -3175,6 +3179,10 @@ RMS-Fehler %7 mm, größter %8 mm
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>
+    <message>
+        <source>Nothing of the task was done, so time and handling were not scored.</source>
+        <translation>Von der Aufgabe wurde nichts erledigt; Zeit und Handhabung wurden daher nicht bewertet.</translation>
+    </message>
     <message>
         <source>Took longer than the target time.</source>
         <translation>Länger als die Zielzeit gebraucht.</translation>

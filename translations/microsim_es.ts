@@ -1778,6 +1778,10 @@
         <translation>Más puntos de los necesarios.</translation>
     </message>
     <message>
+        <source>Counts only once part of the task is done.</source>
+        <translation>Solo cuenta cuando se ha hecho parte de la tarea.</translation>
+    </message>
+    <message>
         <source>Work faster.</source>
         <translation>Trabaje más rápido.</translation>
     </message>
@@ -3175,6 +3179,10 @@ Error RMS %7 mm, máximo %8 mm
 </context>
 <context>
     <name>microsim::gui::ReviewText</name>
+    <message>
+        <source>Nothing of the task was done, so time and handling were not scored.</source>
+        <translation>No se hizo nada de la tarea, así que el tiempo y el manejo no se puntuaron.</translation>
+    </message>
     <message>
         <source>Took longer than the target time.</source>
         <translation>Tardó más que el tiempo objetivo.</translation>

@@ -93,7 +93,8 @@ class RubricReader {
 
   bool metric(const json& v, const std::string& path, RubricMetric& out) {
     if (!object(v, path,
-                {"key", "weight", "target", "tolerance", "limit", "bad", "feedback"}))
+                {"key", "weight", "target", "tolerance", "limit", "bad", "feedback",
+                 "only_if_task_done"}))
       return false;
     const json* k = required(v, path, "key");
     const json* w = required(v, path, "weight");
@@ -131,6 +132,10 @@ class RubricReader {
       if (const auto b = f->find("below");
           b != f->end() && !string(*b, key(fp, "below"), out.feedbackBelow))
         return false;
+    }
+    if (const auto d = v.find("only_if_task_done"); d != v.end()) {
+      if (!d->is_boolean()) return fail(K::WrongType, key(path, "only_if_task_done"));
+      out.onlyIfTaskDone = d->get<bool>();
     }
     return true;
   }

@@ -47,9 +47,7 @@ AttemptScore scoreMetrics(const std::vector<MetricValue>& values, const Rubric& 
     return nullptr;
   };
 
-  // weighted points
-  double weighted = 0.0;
-  double weights = 0.0;
+  // each metric's points
   for (const RubricMetric& m : rubric.metrics) {
     const MetricValue* v = find(m.key);
     MetricScore s = v ? scoreMetric(m, v->value, v->unit)
@@ -59,9 +57,31 @@ AttemptScore scoreMetrics(const std::vector<MetricValue>& values, const Rubric& 
       s.weight = 0.0;
       s.feedback = m.key + ".not_applicable";
     }
+    out.metrics.push_back(std::move(s));
+  }
+
+  // how the task was done counts once some of it was done (rubric.h, only_if_task_done)
+  bool hasTask = false;
+  bool taskDone = false;
+  for (std::size_t i = 0; i < rubric.metrics.size(); ++i) {
+    if (rubric.metrics[i].onlyIfTaskDone || !out.metrics[i].applicable) continue;
+    hasTask = true;
+    taskDone = taskDone || out.metrics[i].points > 0.0;
+  }
+  if (hasTask && !taskDone)
+    for (std::size_t i = 0; i < rubric.metrics.size(); ++i) {
+      MetricScore& s = out.metrics[i];
+      if (!rubric.metrics[i].onlyIfTaskDone || !s.applicable) continue;
+      s.points = 0.0;
+      s.feedback = "task.not_done";
+    }
+
+  // weighted points
+  double weighted = 0.0;
+  double weights = 0.0;
+  for (const MetricScore& s : out.metrics) {
     weighted += s.weight * s.points;
     weights += s.weight;
-    out.metrics.push_back(std::move(s));
   }
   out.score = weights > 0.0 ? 100.0 * weighted / weights : 0.0;
 

@@ -60,7 +60,8 @@ TEST(ScoreCommand, TheShippedStitchScoresThePinnedValueInTheTableAndTheJson) {
   EXPECT_FALSE(doc.value(QStringLiteral("truncated")).toBool());
   EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("id")).toString(),
             QStringLiteral("03_single_stitch"));
-  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("version")).toInt(), 2);
+  EXPECT_EQ(doc.value(QStringLiteral("rubric")).toObject().value(QStringLiteral("version")).toInt(),
+            3);
   const QJsonArray metrics = doc.value(QStringLiteral("metrics")).toArray();
   ASSERT_EQ(metrics.size(), 15);
   for (const QJsonValue& m : metrics)
@@ -283,7 +284,7 @@ TEST(ScoreCommand, WithADatabaseTheAttemptIsStoredForTheTrainee) {
   EXPECT_EQ(attempts[0].id, id);
   EXPECT_EQ(attempts[0].lesson, QStringLiteral("03_single_stitch"));
   EXPECT_EQ(attempts[0].rubricId, QStringLiteral("03_single_stitch"));
-  EXPECT_EQ(attempts[0].rubricVersion, 2);
+  EXPECT_EQ(attempts[0].rubricVersion, 3);
   ASSERT_TRUE(attempts[0].score.has_value());
   EXPECT_NEAR(*attempts[0].score, kStitchScore, 1e-9);
 }

@@ -19,7 +19,8 @@ const std::string kValid = R"({
   "metrics": [
     {"key": "entry_angle", "weight": 2, "target": 0, "tolerance": 15, "limit": 45, "bad": "above",
      "feedback": {"above": "entry_angle.too_oblique"}},
-    {"key": "bite", "weight": 1, "target": 0.25, "tolerance": 0.05, "limit": 0.2, "bad": "both"}
+    {"key": "bite", "weight": 1, "target": 0.25, "tolerance": 0.05, "limit": 0.2, "bad": "both",
+     "only_if_task_done": true}
   ],
   "never_events": [{"metric": "back_wall_catches", "above": 0, "cap": 0, "feedback": "never.back_wall_catch"}]
 })";
@@ -52,6 +53,8 @@ TEST(Rubric, AValidRubricLoadsWithDefaults) {
   EXPECT_EQ(rubric.metrics[0].feedbackAbove, "entry_angle.too_oblique");
   EXPECT_EQ(rubric.metrics[0].feedbackBelow, "entry_angle.too_low");
   EXPECT_EQ(rubric.metrics[1].feedbackAbove, "bite.too_high");
+  EXPECT_FALSE(rubric.metrics[0].onlyIfTaskDone) << "by default a metric is part of the task";
+  EXPECT_TRUE(rubric.metrics[1].onlyIfTaskDone);
   ASSERT_EQ(rubric.neverEvents.size(), 1u);
   EXPECT_EQ(rubric.neverEvents[0].feedback, "never.back_wall_catch");
 }
@@ -91,6 +94,9 @@ TEST(Rubric, OutOfRangeValuesAreInvalid) {
   EXPECT_EQ(errorOf(with("\"pass_mark\": 65", "\"pass_mark\": 101")).field, "pass_mark");
   EXPECT_EQ(errorOf(with("\"version\": 3", "\"version\": 0")).field, "version");
   EXPECT_EQ(errorOf(with("\"version\": 3", "\"version\": 1.5")).kind, RubricErrorKind::WrongType);
+  const RubricError flag = errorOf(with("\"only_if_task_done\": true", "\"only_if_task_done\": 1"));
+  EXPECT_EQ(flag.kind, RubricErrorKind::WrongType);
+  EXPECT_EQ(flag.field, "metrics[1].only_if_task_done");
   EXPECT_EQ(errorOf(with("\"bad\": \"both\"", "\"bad\": \"sideways\"")).field, "metrics[1].bad");
   EXPECT_EQ(errorOf(with("\"cap\": 0", "\"cap\": 1e999")).kind, RubricErrorKind::InvalidValue);
   const RubricError empty = errorOf(R"({"id": "x", "version": 1, "pass_mark": 50, "metrics": []})");

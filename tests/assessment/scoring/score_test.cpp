@@ -1,5 +1,6 @@
 // Scoring a hand-made metric set with a rubric: points inside, across and past the
-// tolerance band, feedback keys by side, NaN metrics, never-event caps, and proficiency.
+// tolerance band, feedback keys by side, NaN metrics, never-event caps, how the task was done
+// counted only once some of it was, and proficiency.
 #include "microsim/assessment/scoring/score.h"
 
 #include <gtest/gtest.h>
@@ -95,6 +96,33 @@ TEST(Score, NeverEventsCapTheScoreAndAMissingMetricScoresZero) {
   EXPECT_NEAR(s.score, 25.0, 1e-12);  // only the bite (weight 1 of 4) scores
   EXPECT_EQ(s.metrics[0].feedback, "entry_angle.missing");
   EXPECT_EQ(s.metrics[2].feedback, "time.missing");
+}
+
+// Time marked only_if_task_done: quick and idle is worth nothing until the task earns points
+TEST(Score, HowTheTaskWasDoneCountsOnlyOnceSomeOfItWasDone) {
+  Rubric r = demoRubric();
+  r.metrics[2].onlyIfTaskDone = true;  // time
+  // nothing done: the angle and the bite missing, the attempt quick
+  const std::vector<MetricValue> idle{
+      {"entry_angle", std::nan(""), "deg"}, {"bite_walls", std::nan(""), "1"}, {"time", 5, "s"}};
+  AttemptScore s = scoreMetrics(idle, r);
+  EXPECT_DOUBLE_EQ(s.score, 0.0);
+  EXPECT_DOUBLE_EQ(s.metrics[2].points, 0.0);
+  EXPECT_EQ(s.metrics[2].feedback, "task.not_done");
+  EXPECT_DOUBLE_EQ(s.metrics[2].value, 5.0) << "the value is still reported";
+  // without the mark the same attempt collected the time's points
+  EXPECT_NEAR(scoreMetrics(idle, demoRubric()).score, 25.0, 1e-12);
+  // some of the task done (a bite, no angle): time counts again
+  const std::vector<MetricValue> bite{
+      {"entry_angle", std::nan(""), "deg"}, {"bite_walls", 2.5, "1"}, {"time", 5, "s"}};
+  s = scoreMetrics(bite, r);
+  EXPECT_NEAR(s.score, 50.0, 1e-12);
+  EXPECT_DOUBLE_EQ(s.metrics[2].points, 1.0);
+  EXPECT_EQ(s.metrics[2].feedback, "");
+  // a rubric of marked metrics only has no task to wait for
+  Rubric onlyTime;
+  onlyTime.metrics = {r.metrics[2]};
+  EXPECT_DOUBLE_EQ(scoreMetrics({{"time", 5, "s"}}, onlyTime).score, 100.0);
 }
 
 TEST(Score, ProficiencyIsThePassMarkOnTwoConsecutiveTests) {

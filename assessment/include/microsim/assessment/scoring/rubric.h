@@ -14,7 +14,8 @@
 //       "tolerance": 15,                          full points within this of the target
 //       "limit": 45,                              no points from this far (> tolerance)
 //       "bad": "above" | "below" | "both",        which side of the target loses points
-//       "feedback": {"above": "entry_angle.too_oblique", "below": ...}},   optional keys
+//       "feedback": {"above": "entry_angle.too_oblique", "below": ...},   optional keys
+//       "only_if_task_done": true},               optional (false): see below
 //      ...],
 //    "never_events": [                            optional
 //      {"metric": "back_wall_catches", "above": 0, "cap": 0,
@@ -27,6 +28,12 @@
 // feedback "<key>.not_applicable"). Default feedback
 // keys are "<key>.too_high" and "<key>.too_low". A never-event fires when its metric's
 // value exceeds "above"; it caps the score at "cap" (0 zeroes it).
+//
+// "only_if_task_done" marks a metric that grades how the task was done rather than whether:
+// time, economy of motion, regrasps, the finished repair's lapses. Such a metric earns its
+// points only when a metric without the mark (the task: stitches, knots, pierces) earned
+// some; otherwise it scores 0 with feedback "task.not_done". An attempt in which nothing was
+// done no longer collects points for being quick and still (score.h).
 //
 // Loading never throws: errors name the file, line:column and field path like the scene
 // loader ("metrics[2].tolerance"). Unknown keys and unknown metric names are errors.
@@ -52,6 +59,7 @@ struct RubricMetric {
   BadSide bad = BadSide::Both;
   std::string feedbackAbove;  ///< key when too high
   std::string feedbackBelow;  ///< key when too low
+  bool onlyIfTaskDone = false;  ///< points only once a task metric earned some (see above)
 };
 
 struct NeverEvent {

@@ -4,7 +4,9 @@
 //   score = 100 · Σ weight·points / Σ weight, then capped by every never-event that fired;
 //   a metric that does not apply to the attempt (MetricValue::applicable false) is left out
 //   of both sums, so its weight is spread over the others in proportion; its MetricScore
-//   has weight 0 and feedback "<key>.not_applicable".
+//   has weight 0 and feedback "<key>.not_applicable". A metric marked only_if_task_done
+//   (rubric.h) scores 0 points, feedback "task.not_done", unless some applicable metric
+//   without the mark earned points (when the rubric has such metrics).
 //   passed = score ≥ pass_mark.
 // Proficiency is the pass mark on two consecutive Test attempts.
 
