@@ -105,51 +105,15 @@ inline double springExpm1MinusX(double x) {
 
 }  // namespace detail
 
-/// Tension T(l) (µN) of a link with base stiffness k, rest length r and stiffening c.
-inline double springTension(double k, double rest, const Stiffening& c, double length) {
-  const double d = length - rest;
-  if (c.beta > 0.0 && d > 0.0) {
-    const double knee = detail::springExpKnee(rest, c.beta);
-    const double t = k * detail::springExpm1(c.beta * std::min(d, knee)) / c.beta;
-    return d > knee ? t + k * detail::exponential(c.beta * knee) * (d - knee) : t;
-  }
-  const double dp = std::max(d, 0.0);
-  return k * d * (1.0 + c.c * dp * dp);
-}
-
-/// dT/dl (g/s²).
-inline double springTensionDerivative(double k, double rest, const Stiffening& c, double length) {
-  const double d = length - rest;
-  if (c.beta > 0.0 && d > 0.0)
-    return k * detail::exponential(c.beta * std::min(d, detail::springExpKnee(rest, c.beta)));
-  const double dp = std::max(d, 0.0);
-  return k * (1.0 + 3.0 * c.c * dp * dp);
-}
-
-/// Energy E(l) (nJ).
-inline double springEnergy(double k, double rest, const Stiffening& c, double length) {
-  const double d = length - rest;
-  if (c.beta > 0.0 && d > 0.0) {
-    const double knee = detail::springExpKnee(rest, c.beta);
-    const double e = k * detail::springExpm1MinusX(c.beta * std::min(d, knee)) / (c.beta * c.beta);
-    if (d <= knee) return e;
-    const double t = k * detail::springExpm1(c.beta * knee) / c.beta;
-    const double over = d - knee;
-    return e + t * over + 0.5 * k * detail::exponential(c.beta * knee) * over * over;
-  }
-  const double dp2 = std::max(d, 0.0) * std::max(d, 0.0);
-  return k * (0.5 * d * d + 0.25 * c.c * dp2 * dp2);
-}
-
-/// T and E of one spring at one length, as springTension and springEnergy give them to the
-/// bit, from one e^x − 1 (the two calls make two or three): what a Newton iteration needs
-/// of a link at every position it tries. T' (springTensionDerivative, one e^x) only the
-/// positions it goes on from need.
+/// T and E of one spring at one length, from one e^x − 1 (and an e^x past the knee): what a
+/// Newton iteration needs of a link at every position it tries. T' (springTensionDerivative,
+/// one e^x) only the positions it goes on from need.
 struct SpringTerms {
   double tension = 0.0;  ///< T (µN)
   double energy = 0.0;   ///< E (nJ)
 };
 
+/// T and E of a link with base stiffness k, rest length r and stiffening c (see the header).
 inline SpringTerms springTerms(double k, double rest, const Stiffening& c, double length) {
   const double d = length - rest;
   if (c.beta > 0.0 && d > 0.0) {
@@ -166,6 +130,25 @@ inline SpringTerms springTerms(double k, double rest, const Stiffening& c, doubl
   }
   const double dp = std::max(d, 0.0);
   return {k * d * (1.0 + c.c * dp * dp), k * (0.5 * d * d + 0.25 * c.c * (dp * dp) * (dp * dp))};
+}
+
+/// Tension T(l) (µN).
+inline double springTension(double k, double rest, const Stiffening& c, double length) {
+  return springTerms(k, rest, c, length).tension;
+}
+
+/// dT/dl (g/s²).
+inline double springTensionDerivative(double k, double rest, const Stiffening& c, double length) {
+  const double d = length - rest;
+  if (c.beta > 0.0 && d > 0.0)
+    return k * detail::exponential(c.beta * std::min(d, detail::springExpKnee(rest, c.beta)));
+  const double dp = std::max(d, 0.0);
+  return k * (1.0 + 3.0 * c.c * dp * dp);
+}
+
+/// Energy E(l) (nJ).
+inline double springEnergy(double k, double rest, const Stiffening& c, double length) {
+  return springTerms(k, rest, c, length).energy;
 }
 
 /// T / l, the factor that turns x_b − x_a into the force on a (g/s²). Finite for l → 0
