@@ -192,8 +192,16 @@ BetweenJaws Scene::betweenJaws(Hand hand, double closure) const {
 
   // the suture first: the point of the needle or thread between the jaws nearest where they meet
   if (suture_) {
+    // not the turns wound on these jaws: they lie round them, and the jaws close on the tail
+    const ThreadNearJaws thread{sutureState_.x, sutureState_.alive, -1, suture_->swage(),
+                                suture_->def().contactRadius};
+    std::vector<std::uint8_t> takeable = sutureState_.alive;
+    for (const std::array<int, 2>& run : threadWoundOnJaws(f, thread))
+      for (int link = std::max(run[0] - 1, 0);
+           link <= run[1] && link < static_cast<int>(takeable.size()); ++link)
+        takeable[static_cast<std::size_t>(link)] = 0;
     const tools::GraspRegion region = tools::graspRegion(f.def(), f.pose(), closure, suture_->def().contactRadius);
-    found.suture = tools::chainPointBetweenJaws(region, sutureState_.x, sutureState_.alive);
+    found.suture = tools::chainPointBetweenJaws(region, sutureState_.x, takeable);
     if (found.suture) return found;
   }
 
@@ -270,10 +278,12 @@ void Scene::stepSuture() {
   // lies between them (thread_jaw_obstacles.h): it is wound round them in the instrument tie.
   // A needle lying free (nothing holds the suture) is the one opened jaws reach round to take.
   const int freeNeedleSwage = suture_->def().needleLinks > 0 && grips.empty() ? suture_->swage() : -1;
+  const int firstThread = suture_->def().needleLinks > 0 ? suture_->swage() + 1 : 0;
+  const ThreadNearJaws thread{sutureState_.x, sutureState_.alive, freeNeedleSwage, firstThread,
+                              suture_->def().contactRadius};
   for (std::size_t h = 0; h < forceps_.size(); ++h) {
     const auto& f = forceps_[h];
-    if (f && jawsPlaced_[h])
-      appendThreadJawObstacles(*f, sutureState_.x, freeNeedleSwage, suture_->def().contactRadius, world.capsules);
+    if (f && jawsPlaced_[h]) appendThreadJawObstacles(*f, thread, world);
   }
   suture::SutureStepParams params = def_.needle->step;
   params.dt = dt();

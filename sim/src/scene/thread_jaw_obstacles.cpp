@@ -1,5 +1,6 @@
 #include "thread_jaw_obstacles.h"
 
+#include "microsim/sim/collide/point_triangle.h"
 #include "microsim/sim/collide/segment_segment.h"
 #include "microsim/sim/tools/jaw_contact.h"
 
@@ -16,6 +17,15 @@ namespace {
 
 // mm: opened jaws this near the needle are not solid to the thread (header essay)
 constexpr double kNeedleReach = 0.5;
+// turns: the least winding of a wound run; how far off the jaws' hull a node may lie to count,
+// and to be kept (mm; the second below the first, so turns the sleeve keeps stay wound)
+constexpr int kWoundQuarterTurns = 4;
+constexpr double kCaptureMargin = 0.06;
+// mm: how deep into the jaws' hull a wound node may have been pressed (the last length restore
+// of a substep lets a turn pulled tight sink a few µm; the jaws open a little every frame);
+// thread between the jaws lies deeper, a jaw's radius in
+constexpr double kPressedDepth = 0.03;
+constexpr double kSleeveSlack = 0.03;
 
 // the radii of the two capsules a jaw becomes: its tip half, its heel half (mm)
 std::array<double, 2> halfRadii(const tools::JawCapsule& jaw) {
@@ -108,28 +118,116 @@ std::array<int, 2> heldRun(const tools::Forceps& forceps, const std::array<tools
   return {first, end};
 }
 
+// the hull of the two jaws: their capsules and the slab between them (suture_contact.h)
+suture::Sleeve jawHull(const std::array<tools::JawCapsule, 2>& jaws) {
+  suture::Sleeve hull;
+  for (std::size_t j = 0; j < 2; ++j) {
+    const std::array<suture::Capsule, 2> halves = jawHalves(jaws[j]);
+    hull.jaws[2 * j] = halves[0];
+    hull.jaws[2 * j + 1] = halves[1];
+  }
+  hull.hinge = jaws[0].heel;
+  hull.tipA = jaws[0].tip;
+  hull.tipB = jaws[1].tip;
+  hull.slabRadius = halfRadii(jaws[0])[0];
+  hull.slack = kSleeveSlack;
+  return hull;
+}
+
+// the quadrant of (y, z) about the tool's axis: 0 to 3 counterclockwise from +y
+int quadrant(const Vec3& q) {
+  if (q.z() >= 0.0) return q.y() >= 0.0 ? 0 : 1;
+  return q.y() < 0.0 ? 2 : 3;
+}
+
+// the quadrants from a to b about the tool's axis, signed (counterclockwise positive; 2: to
+// the opposite quadrant)
+int quadrantStep(const Vec3& a, const Vec3& b) {
+  const int step = (quadrant(b) - quadrant(a) + 4) % 4;
+  return step == 3 ? -1 : step;
+}
+
+std::vector<std::array<int, 2>> woundRuns(const tools::Forceps& forceps,
+                                          const std::array<tools::JawCapsule, 2>& jaws,
+                                          const ThreadNearJaws& thread,
+                                          const std::array<int, 2>& held) {
+  std::vector<std::array<int, 2>> runs;
+  const suture::Sleeve hull = jawHull(jaws);
+  const double length = tools::jawLength(forceps.def());
+  const Eigen::Isometry3d toTool = forceps.pose().inverse();
+  const int nodes = static_cast<int>(thread.x.cols());
+  int first = -1;
+  int quarters = 0;  // the run's winding in quadrant boundaries crossed, signed
+  Vec3 last = Vec3::Zero();
+  const auto close = [&](int end) {
+    if (first >= 0 && std::abs(quarters) >= kWoundQuarterTurns) runs.push_back({first, end});
+    first = -1;
+  };
+  for (int i = std::max(thread.firstThreadNode, 0); i < nodes; ++i) {
+    const Vec3 q = toTool * Vec3(thread.x.col(i));
+    const Vec3 p = thread.x.col(i);
+    // on the jaws: between tip and hinge, outside them (not between them), near their surface
+    const double off =
+        i < held[0] || i > held[1] ? suture::hullOffset(hull, p, p).distance : -1.0;  // held: in
+    const bool onJaws = q.x() >= 0.0 && q.x() <= length && off > -kPressedDepth &&
+                        off <= thread.radius + kCaptureMargin;
+    const bool linked = i > 0 && thread.alive[static_cast<std::size_t>(i - 1)];
+    // a link across the axis (two quadrants at once) goes through the jaws, not round them
+    const bool across = onJaws && first >= 0 && std::abs(quadrantStep(last, q)) == 2;
+    if (!onJaws || !linked || across) close(i - 1);
+    if (!onJaws) continue;
+    // the winding about the tool's axis (tip to hinge), counted in quadrants of its (y, z)
+    // plane: signs only, so no machine's maths library can tell it otherwise
+    if (first < 0) {
+      first = i;
+      quarters = 0;
+    } else {
+      quarters += quadrantStep(last, q);
+    }
+    last = q;
+  }
+  close(nodes - 1);
+  return runs;
+}
+
 }  // namespace
 
-void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
-                              std::vector<suture::Capsule>& out) {
+std::vector<std::array<int, 2>> threadWoundOnJaws(const tools::Forceps& forceps,
+                                                  const ThreadNearJaws& thread) {
+  const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
+  const std::array<int, 2> held = forceps.holdsSuture()
+                                      ? heldRun(forceps, jaws, thread.x, thread.radius)
+                                      : std::array<int, 2>{0, -1};
+  return woundRuns(forceps, jaws, thread, held);
+}
+
+void appendThreadJawObstacles(const tools::Forceps& forceps, const ThreadNearJaws& thread,
+                              suture::SutureWorld& world) {
+  const Points& x = thread.x;
   const std::array<tools::JawCapsule, 2> jaws = tools::jawCapsules(forceps);
   // what passes through: the held run while holding (capsules at full size), else nothing
   // (capsules thinned to leave the thread between opened jaws clear)
   std::array<int, 2> held{0, -1};
   std::vector<Vec3> between;
   if (forceps.holdsSuture()) {
-    held = heldRun(forceps, jaws, x, threadRadius);
+    held = heldRun(forceps, jaws, x, thread.radius);
   } else {
-    if (!forceps.closed() && needleAtJaws(jaws, x, swage, kNeedleReach)) return;
+    if (!forceps.closed() && needleAtJaws(jaws, x, thread.freeNeedleSwage, kNeedleReach)) return;
     between = threadBetweenJaws(forceps, halfRadii(jaws[0]), x);
   }
   for (const tools::JawCapsule& jaw : jaws) {
     for (const suture::Capsule& half : jawHalves(jaw)) {
-      suture::Capsule c = clearOf(half.a, half.b, half.radius, between, threadRadius);
+      suture::Capsule c = clearOf(half.a, half.b, half.radius, between, thread.radius);
       c.freeFirst = held[0];
       c.freeLast = held[1];
-      out.push_back(c);
+      world.capsules.push_back(c);
     }
+  }
+  for (const std::array<int, 2>& run : woundRuns(forceps, jaws, thread, held)) {
+    suture::Sleeve sleeve = jawHull(jaws);
+    sleeve.first = run[0];
+    sleeve.last = run[1];
+    world.sleeves.push_back(sleeve);
   }
 }
 

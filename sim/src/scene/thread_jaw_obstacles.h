@@ -25,18 +25,47 @@
 // keep clear of what they swept, and opening jaws do not count the turns their axes have just
 // passed as between them. Closed jaws (θ = 0) have nothing between them.
 //
+// Turns wound on the jaws. A run of consecutive thread nodes (not the needle, not the run the
+// jaws hold) between tip and hinge, each outside the jaws' hull (their capsules and the slab
+// between them: suture_contact.h, Sleeve; pressed in by no more than 0.03 mm) and no more
+// than 0.06 mm off it, that crosses at least four quadrant boundaries about the tool's axis
+// (more than three quarters of a turn; a link across the axis, two at once, goes through the
+// jaws and ends the run) is wound on them. The count uses signs only, so it cannot differ
+// between machines' maths libraries. A wound run is kept in a shell 0.03 mm loose round the
+// hull by a sleeve, the jaws do not take it when they close (they take what lies between
+// them: the tail), a hole beside it draws no thread through it from beyond it
+// (suture_constraints.h), and a hole that slides does not carry it (suture_solver.cpp).
+// Nothing is remembered from frame to frame: a run is wound while it is, and comes off where
+// the shell ends, past the tips, when the jaws are drawn back out of it.
+//
 // Units: mm.
 
-#include "microsim/sim/suture/suture_contact.h"
+#include "microsim/sim/suture/suture_solver.h"
 #include "microsim/sim/tools/forceps.h"
 
+#include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace microsim::sim {
 
-/// Appends the jaws of `forceps` for the chain at positions x (a needle lying free on nodes
-/// 0..swage, −1 without one, then the thread, of radius `threadRadius`, mm; header essay).
-void appendThreadJawObstacles(const tools::Forceps& forceps, const Points& x, int swage, double threadRadius,
-                              std::vector<suture::Capsule>& out);
+/// The chain as the jaws meet it.
+struct ThreadNearJaws {
+  const Points& x;
+  std::span<const std::uint8_t> alive;  ///< per link
+  int freeNeedleSwage = -1;             ///< a needle lying free on nodes 0..swage; −1: none
+  int firstThreadNode = 0;              ///< nodes before it are the needle's
+  double radius = 0.0;                  ///< the thread's
+};
+
+/// Appends the jaws of `forceps` (capsules, and a sleeve per wound run) for the chain
+/// (header essay).
+void appendThreadJawObstacles(const tools::Forceps& forceps, const ThreadNearJaws& thread,
+                              suture::SutureWorld& world);
+
+/// The runs of thread wound on the jaws of `forceps`, [first, last] nodes (header essay).
+std::vector<std::array<int, 2>> threadWoundOnJaws(const tools::Forceps& forceps,
+                                                  const ThreadNearJaws& thread);
 
 }  // namespace microsim::sim

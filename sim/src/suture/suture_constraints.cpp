@@ -57,6 +57,13 @@ std::vector<int> piercePathOrder(const std::vector<Pierce>& pierces) {
   return order;
 }
 
+// by node, a hard constraint before a soft one on the same node
+void sortInNodeOrder(std::vector<ChainConstraint>& cs) {
+  std::stable_sort(cs.begin(), cs.end(), [](const ChainConstraint& a, const ChainConstraint& b) {
+    return a.node != b.node ? a.node < b.node : a.hard > b.hard;
+  });
+}
+
 // Σ (r_k − rc)(x_k − xc)ᵀ over the first `count` nodes, summed node by node. Written out
 // rather than as one Eigen product: with a dynamic inner size Eigen's blocked matrix product
 // picks its summation order per build (clang's loop unrolling moved a result by an ulp, so a
@@ -75,8 +82,10 @@ Eigen::Matrix3d crossCovariance(const Points& r, const Vec3& rc, const Points& x
 // node that way, so the side behind cs[k] gains a link and the side ahead of the run loses
 // one; the sides within the run keep theirs. Done only when it lowers the larger stretch of
 // those two outer sides, and when the node past the run is free thread (not a grip, not past
-// the piece's end, not the needle). `behind` is cs[k]'s neighbour on the far side from `step`
-// as slidePierces measures it (the swage for a grip on the needle). True when done.
+// the piece's end, not the needle). A run ends short of turns wound on a forceps' jaws: the
+// side to them loses the link, and the length restore draws the turns along the jaws after it.
+// `behind` is cs[k]'s neighbour on the far side from `step` as slidePierces measures it (the swage
+// for a grip on the needle). True when done.
 bool pushRun(const SutureModel& model, std::vector<ChainConstraint>& cs, std::size_t k, int step,
              const ChainConstraint* behind, const Piece& piece, double slideTolerance) {
   const auto index = [&](std::size_t j) { return static_cast<std::ptrdiff_t>(j) + step; };
@@ -92,6 +101,7 @@ bool pushRun(const SutureModel& model, std::vector<ChainConstraint>& cs, std::si
     const bool taut =
         sideStretch(model, cs[last].node + step, cs[last].position, &next) > 1.0 + slideTolerance;
     if (!adjacent && !taut) break;
+    if (next.wound) break;  // the turns give thread: the side to them gives the link
     if (next.hard) return false;
     last = static_cast<std::size_t>(index(last));
   }
@@ -111,6 +121,17 @@ bool pushRun(const SutureModel& model, std::vector<ChainConstraint>& cs, std::si
     if (j == last) break;
   }
   return true;
+}
+
+// the ends of the wound runs in the piece, as hard constraints where they are, kept in node order
+void addWoundEnds(const Points& x, std::span<const std::array<int, 2>> wound, const Piece& piece,
+                  std::vector<ChainConstraint>& cs) {
+  const std::size_t before = cs.size();
+  for (const std::array<int, 2>& run : wound)
+    for (const int node : {run[0], run[1]})
+      if (node >= piece.first && node <= piece.last)
+        cs.push_back({node, x.col(node), true, -1, true});
+  if (cs.size() != before) sortInNodeOrder(cs);
 }
 
 }  // namespace
@@ -150,14 +171,13 @@ std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const Su
     if (activePierce(model, p) && p.node >= piece.first && p.node <= piece.last)
       out.push_back({p.node, p.point, false, static_cast<int>(k)});
   }
-  std::stable_sort(out.begin(), out.end(), [](const ChainConstraint& a, const ChainConstraint& b) {
-    return a.node != b.node ? a.node < b.node : a.hard > b.hard;
-  });
+  sortInNodeOrder(out);
   return out;
 }
 
 int slidePierces(const SutureModel& model, SutureState& state, std::span<const Grip> grips,
-                 double slideTolerance, std::vector<SutureEvent>& events) {
+                 double slideTolerance, std::vector<SutureEvent>& events,
+                 std::span<const std::array<int, 2>> wound) {
   int slides = 0;
   const int swage = model.swage();
   std::vector<std::pair<int, SutureEventKind>> removed;
@@ -183,6 +203,7 @@ int slidePierces(const SutureModel& model, SutureState& state, std::span<const G
 
   for (const Piece& piece : chainPieces(state.alive)) {
     std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    addWoundEnds(state.x, wound, piece, cs);
     for (std::size_t k = 0; k < cs.size(); ++k) {
       if (cs[k].hard) continue;
       ChainConstraint& me = cs[k];

@@ -203,6 +203,58 @@ int projectCapsuleContacts(Points& x, const Points& xStart, std::span<const Caps
   return count;
 }
 
+HullOffset hullOffset(const Sleeve& sleeve, const Vec3& p, const Vec3& side) {
+  // the slab between the jaws: within the triangle its axes span, out along the plane's normal
+  // on the node's side (on the plane itself: the side it came from); beyond it, as capsules do
+  const collide::PointTriangleClosest slab =
+      collide::closestPointTriangle(p, sleeve.hinge, sleeve.tipA, sleeve.tipB);
+  const Vec3 plane = (sleeve.tipA - sleeve.hinge).cross(sleeve.tipB - sleeve.hinge);
+  const bool within = plane.norm() > 0.0 && (slab.barycentric.array() > 0.0).all();
+  HullOffset out;
+  out.distance = slab.distance - sleeve.slabRadius;
+  if (within) {
+    const Vec3 n = plane.normalized();
+    const double height = (p - slab.point).dot(n);
+    const double from = height != 0.0 ? height : (side - slab.point).dot(n);
+    out.normal = from < 0.0 ? Vec3(-n) : n;
+  } else if (slab.distance > 0.0) {
+    out.normal = (p - slab.point) / slab.distance;
+  }
+  // the jaws' capsules: the nearest surface wins
+  for (const Capsule& c : sleeve.jaws) {
+    const double t = collide::closestParameterOnSegment(p, c.a, c.b);
+    const Vec3 off = p - ((1.0 - t) * c.a + t * c.b);
+    const double d = off.norm() - c.radius;
+    if (d < out.distance && off.norm() > 0.0) {
+      out.distance = d;
+      out.normal = off.normalized();
+    }
+  }
+  return out;
+}
+
+int projectSleeves(Points& x, const Points& xStart, std::span<const Sleeve> sleeves, double radius,
+                   double friction, std::span<const std::uint8_t> movable,
+                   std::vector<std::uint8_t>& touched) {
+  int count = 0;
+  for (const Sleeve& s : sleeves) {
+    for (int i = std::max(s.first, 0); i <= s.last && i < x.cols(); ++i) {
+      if (!movable[static_cast<std::size_t>(i)]) continue;
+      const HullOffset at = hullOffset(s, x.col(i), xStart.col(i));
+      // a thread's radius off the hull, and no more than the slack beyond that
+      const double move = at.distance < radius             ? radius - at.distance
+                          : at.distance > radius + s.slack ? radius + s.slack - at.distance
+                                                           : 0.0;
+      if (move == 0.0) continue;
+      x.col(i) += move * at.normal;
+      applyFriction(x.col(i), xStart.col(i), at.normal, std::abs(move), friction);
+      touched[static_cast<std::size_t>(i)] = 1;
+      ++count;
+    }
+  }
+  return count;
+}
+
 int projectSurfaceContacts(Points& x, const Points& xStart, const ContactSurface& surface,
                            double radius, double friction, std::span<const std::uint8_t> movable,
                            std::span<const ContactExemption> exemptions,

@@ -14,6 +14,15 @@ namespace {
 
 bool finite(const Points& x) { return x.allFinite(); }
 
+// sorted by node, the first of several on one node kept
+void inNodeOrderOnce(std::vector<Leader>& leaders) {
+  std::stable_sort(leaders.begin(), leaders.end(),
+                   [](const Leader& a, const Leader& b) { return a.node < b.node; });
+  leaders.erase(std::unique(leaders.begin(), leaders.end(),
+                            [](const Leader& a, const Leader& b) { return a.node == b.node; }),
+                leaders.end());
+}
+
 // Sliding is how this chain draws thread through a hole: the hole moves on to the next node
 // (suture_constraints.h), and the substep after puts that node on the hole. Through a free tail
 // the next substep then carried the whole tail a link (0.15 mm) in one substep and kept that as
@@ -312,12 +321,16 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     }
     for (const Pierce& p : state.pierces)
       if (p.node >= swage) leaders_.push_back({p.node, p.point});
-    std::stable_sort(leaders_.begin(), leaders_.end(),
-                     [](const Leader& a, const Leader& b) { return a.node < b.node; });
-    leaders_.erase(std::unique(leaders_.begin(), leaders_.end(),
-                               [](const Leader& a, const Leader& b) { return a.node == b.node; }),
-                   leaders_.end());
-    carry(model, state.x, state.alive, leaders_);
+    inNodeOrderOnce(leaders_);
+    // the turns wound on a forceps' jaws stay where they are: a hole that slid moves the span
+    // to the turns, not the turns (carried with the span from a grip beyond them, they were
+    // thrown 0.1 mm in a step, some into the jaws, and the turns came undone)
+    carried_ = leaders_;
+    for (const Sleeve& sleeve : world.sleeves)
+      for (const int node : {sleeve.first, sleeve.last})
+        if (node >= 0 && node < nodes) carried_.push_back({node, state.x.col(node)});
+    inNodeOrderOnce(carried_);
+    carry(model, state.x, state.alive, carried_);
 
     // who contacts may move; pierced faces do not push the thread passing through them
     std::fill(movable_.begin(), movable_.end(), std::uint8_t{1});
@@ -336,6 +349,8 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
       report.contactNodes = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow,
                                                    movable_, contact_, &blocks_, state.alive);
+      report.contactNodes +=
+          projectSleeves(state.x, xStart_, world.sleeves, radius, muNow, movable_, contact_);
       if (world.surface)
         report.contactNodes += projectSurfaceContacts(state.x, xStart_, *world.surface, radius,
                                                       muNow, movableSurface_, exemptions_, contact_,
@@ -368,6 +383,7 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
     int placed = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, 0.0, movable_,
                                         contact_, &blocks_, state.alive);
+    placed += projectSleeves(state.x, xStart_, world.sleeves, radius, 0.0, movable_, contact_);
     if (world.surface)
       placed += projectSurfaceContacts(state.x, xStart_, *world.surface, radius, 0.0,
                                        movableSurface_, exemptions_, contact_, &blocks_);
@@ -404,7 +420,10 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
     state.time += h;
     holesBefore_.clear();
     for (const Pierce& p : state.pierces) holesBefore_.push_back(p.node);
-    const int slid = slidePierces(model, state, current_, params.slideTolerance, report.events);
+    anchors_.clear();
+    for (const Sleeve& sleeve : world.sleeves) anchors_.push_back({sleeve.first, sleeve.last});
+    const int slid =
+        slidePierces(model, state, current_, params.slideTolerance, report.events, anchors_);
     report.slides += slid;
     if (slid > 0 && name() != "ftl")
       relayFreeTails(model, state, holesBefore_, current_, selfTouched_);

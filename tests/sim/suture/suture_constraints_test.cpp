@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -228,6 +229,48 @@ TEST(SuturePierces, AStitchsFourHolesAreDrawnThroughTogetherWhenOneEndIsPulled) 
   EXPECT_TRUE(events.empty());
   ASSERT_EQ(s.pierces.size(), 4u);
   for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(s.pierces[k].node, holes[k] + 4) << k;
+}
+
+// A hole beside turns wound on a forceps' jaws (the instrument tie): the long end runs from the
+// hole 5 links to the turns, round them, and on to the hand. Its straight span to the hand is
+// far short of its arc, so measured to the hand the hole's side reads slack, and a tail pulled
+// taut drew it through the hole link by link. Measured to the turns, the side is taut as well:
+// the tail only stretches (the turns, not the hole, give: they slide along the jaws).
+TEST(SuturePierces, AHoleBesideTurnsWoundOnTheJawsDrawsNoThreadThroughThem) {
+  SutureDef d;
+  d.links = 40;
+  d.needleLinks = 0;
+  d.length = 4.0;
+  const SutureModel m(d);
+  const auto laid = [&] {
+    SutureState s = SutureState::laidOut(m);
+    // nodes 0..10 coiled tight near the origin (the hand at node 0, the turns 1..10), the side
+    // 10..15 straight and taut along +x to the hole at node 15, the tail 15..20 to a grip at
+    // node 20 pulled 10 % past its length
+    for (int i = 0; i <= 10; ++i)
+      s.x.col(i) = Vec3(0.05 * std::cos(0.6 * i), 0.05 * std::sin(0.6 * i), 0.005 * i);
+    for (int i = 11; i <= 15; ++i) s.x.col(i) = s.x.col(10) + Vec3(0.1 * (i - 10), 0.0, 0.0);
+    for (int i = 16; i <= 40; ++i) s.x.col(i) = s.x.col(15) + Vec3(0.11 * (i - 15), 0.0, 0.0);
+    s.xPrev = s.x;
+    s.pierces.push_back(pierceThrough(15, s.x.col(15)));
+    return s;
+  };
+  std::array<Grip, 2> grips;
+  grips[1].node = 20;
+  std::vector<SutureEvent> events;
+  const std::array<std::array<int, 2>, 1> wound{{{1, 10}}};
+
+  SutureState measuredToTheHand = laid();
+  grips[0].position = measuredToTheHand.x.col(0);
+  grips[1].position = measuredToTheHand.x.col(20);
+  EXPECT_GT(slideAtDefaultTolerance(m, measuredToTheHand, grips, events), 0);
+  EXPECT_LT(measuredToTheHand.pierces[0].node, 15);
+
+  SutureState measuredToTheTurns = laid();
+  EXPECT_EQ(
+      slidePierces(m, measuredToTheTurns, grips, SutureStepParams{}.slideTolerance, events, wound),
+      0);
+  EXPECT_EQ(measuredToTheTurns.pierces[0].node, 15);
 }
 
 }  // namespace

@@ -31,7 +31,11 @@
 // 0.8 mm needle in 8 links), well inside the default 0.05 mm.
 //
 // Sliding. Around each active pierce P at node c, look at its two sides: the neighbouring
-// constraint Q (grip or pierce) on each side, or the chain's free end. A side's stretch is
+// constraint Q (grip or pierce, or the end of turns wound on a forceps' jaws: the turns hold
+// the thread by their friction, so the side a hole can draw from ends where they begin; measured
+// to the grip beyond them, a long end wound round the jaws read as slack, its straight span far
+// short of its arc, and the tail was drawn 8 links through the stitch as the jaws drew it
+// back) on each side, or the chain's free end. A side's stretch is
 //     σ = |P − Q| / arc(c, q)       (0 towards a free end, which can always feed thread)
 // — the straight distance the side must span over the rest length it has. A grip on a needle
 // node holds the needle rigid up to the swage, so on that side Q is the swage where the needle
@@ -102,6 +106,9 @@ struct ChainConstraint {
   Vec3 position = Vec3::Zero();
   bool hard = false;
   int source = -1;  ///< index into the grips or the pierces
+  /// The end of turns wound on a forceps' jaws (hard): it bounds a side as a grip does, but the
+  /// turns slide on the jaws, so thread may be drawn from them through the holes beside them.
+  bool wound = false;
 };
 
 /// Grips and active pierces of the piece [first, last], sorted by node (a grip wins a tie). A
@@ -113,8 +120,11 @@ std::vector<ChainConstraint> pieceConstraints(const SutureModel& model, const Su
 /// The rules of the header essay: passive (needle) pierces tracked in path order, released
 /// once the needle has left them; active pierces slid; released and pulled-out pierces removed
 /// (an event each, highest index first). Returns the number of one-node slides.
+/// `wound`: runs of nodes [first, last] wound on a forceps' jaws (suture_contact.h, Sleeve),
+/// whose ends bound the sides as grips do.
 int slidePierces(const SutureModel& model, SutureState& state, std::span<const Grip> grips,
-                 double slideTolerance, std::vector<SutureEvent>& events);
+                 double slideTolerance, std::vector<SutureEvent>& events,
+                 std::span<const std::array<int, 2>> wound = {});
 
 /// The breaking rule of the header essay: the link that breaks, if any (the first pair of
 /// grips over the threshold in node order).

@@ -53,6 +53,45 @@ struct Capsule {
   int freeLast = -1;
 };
 
+/// Turns wound on a forceps' jaws, kept on them: nodes first..last lie in a shell round the
+/// jaws' hull, outside it by the thread's radius and by no more than `slack` beyond that. The
+/// hull is the jaws' capsules (as the thread meets them) and the slab between them: the
+/// triangle their axes span (they meet at the hinge; closed jaws make it a segment), as thick
+/// as the thinnest capsule, so a turn round opened jaws lies round both, not between them (mm).
+///
+/// Why two-sided. Turns held on the jaws by one-sided contact and friction alone came off as
+/// the jaws opened to take the tail or moved to it (one of two turns lost on the shipped
+/// instrument-tie scene, issue 19): nothing kept a turn that went slack on the jaws, and a
+/// loose turn slides over a tip 0.1 mm across. Wound thread lies on the jaws until it is drawn
+/// off past their tips, where the shell ends (the caller leaves out nodes past the tips).
+struct Sleeve {
+  std::array<Capsule, 4> jaws;
+  Vec3 hinge = Vec3::Zero();
+  Vec3 tipA = Vec3::Zero();
+  Vec3 tipB = Vec3::Zero();
+  double slabRadius = 0.0;
+  double slack = 0.0;
+  int first = 0;
+  int last = -1;
+};
+
+/// Where a point lies against a sleeve's hull: how far outside its surface (negative: inside),
+/// and the way out of it there (unit).
+struct HullOffset {
+  double distance = 0.0;
+  Vec3 normal = Vec3::UnitZ();
+};
+
+/// The offset of p from the hull of `sleeve` (the nearest of its capsules and its slab); a
+/// point on the slab's plane between the jaws goes out on the side of `side`.
+HullOffset hullOffset(const Sleeve& sleeve, const Vec3& p, const Vec3& side);
+
+/// Keeps the movable nodes of each sleeve's run in its shell, with friction μ against their
+/// motion since xStart (as capsules do). Marks corrected nodes in `touched`; returns how many.
+int projectSleeves(Points& x, const Points& xStart, std::span<const Sleeve> sleeves, double radius,
+                   double friction, std::span<const std::uint8_t> movable,
+                   std::vector<std::uint8_t>& touched);
+
 /// Nodes in [firstNode, lastNode] ignore `face` and the faces sharing a vertex with it
 /// (the suture passes through a pierced face).
 struct ContactExemption {

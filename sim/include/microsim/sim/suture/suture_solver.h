@@ -48,6 +48,7 @@
 #include "microsim/sim/suture/suture_contact.h"
 #include "microsim/sim/suture/suture_model.h"
 
+#include <array>
 #include <memory>
 #include <span>
 #include <string>
@@ -59,6 +60,7 @@ namespace microsim::sim::suture {
 /// The obstacles the suture meets this step (not owned).
 struct SutureWorld {
   std::vector<Capsule> capsules;           ///< forceps jaws, needle holders
+  std::vector<Sleeve> sleeves;             ///< turns wound on forceps jaws, kept there
   const ContactSurface* surface = nullptr; ///< the vessel or any supporting surface
 };
 
@@ -122,7 +124,9 @@ class SutureSolver {
   ChainBlocks blocks_;
   Points xStart_{3, 0};
   std::vector<Leader> leaders_;
+  std::vector<Leader> carried_;   ///< the leaders and the ends of wound turns, for carry
   std::vector<int> holesBefore_;  ///< each pierce's node before this substep's slides
+  std::vector<std::array<int, 2>> anchors_;  ///< the sleeves' runs, for slidePierces
   std::vector<Vec3> gripFrom_;
   std::vector<Vec3> clampFrom_;  // per grip between thread nodes: the link's direction at the step's start
   std::vector<Grip> current_;
