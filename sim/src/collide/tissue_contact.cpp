@@ -227,6 +227,8 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   int best = -1;
   double bestScore = std::numeric_limits<double>::infinity();
   double bestSigned = 0.0;
+  // the bucket's faces come in increasing order, as do the node's own: one walk along both
+  auto ownAhead = own.begin();
   for (int e = gridStart_[bucket]; e < gridStart_[bucket + 1]; ++e) {
     const auto [cell, f] = grid_[static_cast<std::size_t>(e)];
     if (cell != key) continue;
@@ -236,7 +238,8 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
     if ((p.array() < faceLow_.col(f).array() - watch).any() ||
         (p.array() > faceHigh_.col(f).array() + watch).any())
       continue;
-    if (std::binary_search(own.begin(), own.end(), f)) continue;
+    while (ownAhead != own.end() && *ownAhead < f) ++ownAhead;
+    if (ownAhead != own.end() && *ownAhead == f) continue;
     const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
     nearest = std::min(nearest, q.distance);

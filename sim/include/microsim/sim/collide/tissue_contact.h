@@ -34,7 +34,10 @@
 // built: until then a node within reach of a face still lies in that face's grown box (each
 // has moved at most slack/2). A query is O(N) for N surface nodes. The faces each node
 // never meets are listed once, at construction (a node's own stretch of wall is three links
-// deep, so the rule is one look-up a face instead of six), and the faces' boxes are taken once
+// deep, so the rule is one look-up a face instead of six), sorted, and walked along with the
+// cell's faces, which come in face order too (a binary search for each candidate instead made
+// a query at the stitch's positions cost 0.40 ms where it costs 0.17 ms, thread CPU, no grid
+// rebuilt, min of 20), and the faces' boxes are taken once
 // a query, not once for every node that looks at them: over the shipped stitch's replay the
 // contact queries went from 1.26 G instructions (27 % of the whole) to 0.70 G (callgrind),
 // with the same pairs. The scene looks again only when the tissue has moved, and a query
