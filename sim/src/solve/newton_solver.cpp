@@ -113,6 +113,7 @@ class NewtonSolver final : public TissueSolver {
     const bool cacheValid = cacheMatches(model, state.x);
     applyControls(model, state, controls);
     terms_.invalidate(model.linkCount());
+    energyKnown_ = false;
     Points& x = state.x;
 
     const std::vector<unsigned char> lastFree = std::move(free_);
@@ -258,10 +259,12 @@ class NewtonSolver final : public TissueSolver {
   void clearRegion() {
     for (int i : region_) local_[i] = -1;
     region_.clear();
+    energyKnown_ = false;
   }
 
   /// Adds `nodes` (free ones) to the region, then `layers` breadth-first layers of free nodes.
   void grow(const SpringModel& model, const std::vector<int>& nodes, int layers) {
+    energyKnown_ = false;
     std::vector<int> frontier;
     for (int i : nodes)
       if (free_[i] && local_[i] < 0) {
@@ -495,19 +498,21 @@ class NewtonSolver final : public TissueSolver {
     }
 
     // backtracking line search on the energy (Armijo), accepting a full step that lowers
-    // |f| when the energy change is below rounding
-    const double e0 = regionEnergy(model, x);
+    // |f| when the energy change is below rounding; the energy at the start is the one the
+    // last search ended on, while the region stays
+    const double e0 = energyKnown_ ? knownEnergy_ : regionEnergy(model, x);
     const double f0 = force_.squaredNorm();
     start_.resize(3, m);
     for (int r = 0; r < m; ++r) start_.col(r) = x.col(region_[r]);
     double t = 1.0;
+    energyKnown_ = true;
     for (int attempt = 0; attempt < 30; ++attempt, t *= 0.5) {
       for (int r = 0; r < m; ++r)
         x.col(region_[r]) = start_.col(r) + t * direction_.segment<3>(3 * r);
       terms_.invalidate(model.linkCount());
-      const double e = regionEnergy(model, x);
-      if (e <= e0 - 1e-4 * t * slope) return true;
-      if (std::abs(e - e0) <= 1e-12 * (std::abs(e0) + 1.0)) {
+      knownEnergy_ = regionEnergy(model, x);
+      if (knownEnergy_ <= e0 - 1e-4 * t * slope) return true;
+      if (std::abs(knownEnergy_ - e0) <= 1e-12 * (std::abs(e0) + 1.0)) {
         double f = 0.0;
         for (int r = 0; r < m; ++r) f += nodeForce(model, x, region_[r]).squaredNorm();
         if (f < f0) return true;
@@ -515,6 +520,7 @@ class NewtonSolver final : public TissueSolver {
     }
     for (int r = 0; r < m; ++r) x.col(region_[r]) = start_.col(r);
     terms_.invalidate(model.linkCount());
+    knownEnergy_ = e0;
     return false;
   }
 
@@ -563,6 +569,9 @@ class NewtonSolver final : public TissueSolver {
   Eigen::VectorXd force_, direction_;
   mutable LinkTerms terms_;  ///< the links' spring terms at x, until a node moves
   Points start_;
+  // regionEnergy at x as the last line search left it, until x or the region changes
+  bool energyKnown_ = false;
+  double knownEnergy_ = 0.0;
   BlockSystem system_;
   // the direct path: the region's Hessian factorised, and for which region
   SupernodalCholesky cholesky_;
