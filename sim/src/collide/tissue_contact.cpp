@@ -162,26 +162,58 @@ void TissueContact::buildGrid(const Points& x) const {
     if (moved2 <= 0.25 * slack * slack) return;
   }
   gridX_ = x;
-  grid_.clear();
   gridLeftFaceOut_ = false;
   const double r = params_.reach + slack;
   const auto& triangles = tissue_.triangles();
-  for (int f = 0; f < static_cast<int>(triangles.size()); ++f) {
+  const int faces = static_cast<int>(triangles.size());
+
+  // every face's grown box in cells (left empty for a face left out), and the entries they make
+  gridBoxes_.resize(2 * static_cast<std::size_t>(faces));
+  std::size_t entries = 0;
+  for (int f = 0; f < faces; ++f) {
     const auto& t = triangles[static_cast<std::size_t>(f)];
     Vec3 lo = x.col(t[0]).cwiseMin(x.col(t[1])).cwiseMin(x.col(t[2])).array() - r;
     Vec3 hi = x.col(t[0]).cwiseMax(x.col(t[1])).cwiseMax(x.col(t[2])).array() + r;
+    Eigen::Vector3i& a = gridBoxes_[2 * static_cast<std::size_t>(f)];
+    Eigen::Vector3i& b = gridBoxes_[2 * static_cast<std::size_t>(f) + 1];
     // a face torn far apart (or not finite) is left out rather than spread over the grid
     if (!lo.allFinite() || !hi.allFinite() || ((hi - lo).array() > 64.0 * cell_).any()) {
       gridLeftFaceOut_ = true;
+      a.setOnes();
+      b.setZero();
       continue;
     }
-    const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
-    const Eigen::Vector3i b = (hi / cell_).array().floor().cast<int>();
-    for (int ix = a.x(); ix <= b.x(); ++ix)
-      for (int iy = a.y(); iy <= b.y(); ++iy)
-        for (int iz = a.z(); iz <= b.z(); ++iz) grid_.emplace_back(cellKey(ix, iy, iz), f);
+    a = (lo / cell_).array().floor().cast<int>();
+    b = (hi / cell_).array().floor().cast<int>();
+    entries += static_cast<std::size_t>((b - a + Eigen::Vector3i::Ones()).prod());
   }
-  std::sort(grid_.begin(), grid_.end());
+
+  // filed by bucket, each bucket's entries in face order: a counting sort, two passes
+  gridBits_ = 1;
+  while ((std::size_t{1} << gridBits_) < entries) ++gridBits_;
+  gridStart_.assign((std::size_t{1} << gridBits_) + 1, 0);
+  const auto eachCell = [&](auto&& visit) {
+    for (int f = 0; f < faces; ++f) {
+      const Eigen::Vector3i& a = gridBoxes_[2 * static_cast<std::size_t>(f)];
+      const Eigen::Vector3i& b = gridBoxes_[2 * static_cast<std::size_t>(f) + 1];
+      for (int ix = a.x(); ix <= b.x(); ++ix)
+        for (int iy = a.y(); iy <= b.y(); ++iy)
+          for (int iz = a.z(); iz <= b.z(); ++iz) visit(cellKey(ix, iy, iz), f);
+    }
+  };
+  eachCell([&](std::int64_t key, int) { ++gridStart_[gridBucket(key) + 1]; });
+  for (std::size_t k = 1; k < gridStart_.size(); ++k) gridStart_[k] += gridStart_[k - 1];
+  gridFill_.assign(gridStart_.begin(), gridStart_.end() - 1);
+  grid_.resize(entries);
+  eachCell([&](std::int64_t key, int f) {
+    grid_[static_cast<std::size_t>(gridFill_[gridBucket(key)]++)] = {key, f};
+  });
+}
+
+std::size_t TissueContact::gridBucket(std::int64_t key) const {
+  // Fibonacci hashing: the top bits of the key times 2⁶⁴/φ
+  return static_cast<std::size_t>((static_cast<std::uint64_t>(key) * 0x9E3779B97F4A7C15ULL) >>
+                                  (64 - gridBits_));
 }
 
 std::pair<int, double> TissueContact::closestFace(const Points& x, int node, double radius,
@@ -191,20 +223,23 @@ std::pair<int, double> TissueContact::closestFace(const Points& x, int node, dou
   const std::vector<int>& own = ownFaces_[static_cast<std::size_t>(node)];
   const Eigen::Vector3i c = (p / cell_).array().floor().cast<int>();
   const std::int64_t key = cellKey(c.x(), c.y(), c.z());
-  const auto first =
-      std::lower_bound(grid_.begin(), grid_.end(), std::pair<std::int64_t, int>(key, -1));
+  const std::size_t bucket = gridBucket(key);
   int best = -1;
   double bestScore = std::numeric_limits<double>::infinity();
   double bestSigned = 0.0;
-  for (auto it = first; it != grid_.end() && it->first == key; ++it) {
-    const int f = it->second;
+  // the bucket's faces come in increasing order, as do the node's own: one walk along both
+  auto ownAhead = own.begin();
+  for (int e = gridStart_[bucket]; e < gridStart_[bucket + 1]; ++e) {
+    const auto [cell, f] = grid_[static_cast<std::size_t>(e)];
+    if (cell != key) continue;
     // a face whose box, grown by the radius, misses the node is farther than the radius
     // along one axis: most of a cell's faces (their boxes were grown by reach + slack) go
     // here, before the dearer eligibility and closest-point tests
     if ((p.array() < faceLow_.col(f).array() - watch).any() ||
         (p.array() > faceHigh_.col(f).array() + watch).any())
       continue;
-    if (std::binary_search(own.begin(), own.end(), f)) continue;
+    while (ownAhead != own.end() && *ownAhead < f) ++ownAhead;
+    if (ownAhead != own.end() && *ownAhead == f) continue;
     const auto& t = tissue_.triangles()[static_cast<std::size_t>(f)];
     const PointTriangleClosest q = closestPointTriangle(p, x.col(t[0]), x.col(t[1]), x.col(t[2]));
     nearest = std::min(nearest, q.distance);

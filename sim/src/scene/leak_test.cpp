@@ -4,8 +4,8 @@
 #include "microsim/sim/scene/circumference_frame.h"
 #include "microsim/sim/scene/scene.h"
 #include "microsim/sim/solve/spring_kernels.h"
-#include "solve/block_ldlt.h"
 #include "solve/block_system.h"
+#include "solve/supernodal_cholesky.h"
 
 #include <algorithm>
 #include <array>
@@ -238,7 +238,7 @@ LeakTestStatus minimiseLeakProblem(const LeakProblem& problem, Points& x,
   const int m = problem.size();
   const double scale = problem.forceScale();
   detail::BlockSystem h;
-  detail::BlockLdlt ldlt;
+  detail::SupernodalCholesky cholesky;
   Eigen::VectorXd f, step, trial;
   Points start(3, m);
   for (r.iterations = 0;; ++r.iterations) {
@@ -253,13 +253,13 @@ LeakTestStatus minimiseLeakProblem(const LeakProblem& problem, Points& x,
     // the direction: the true Hessian, shifted where compressed links make it indefinite
     problem.hessian(x, h);
     double shift = 0.0;
-    while (!ldlt.factorize(h)) {
+    while (!cholesky.factorize(h)) {
       const double add = shift == 0.0 ? kLeakFirstShift * problem.stiffest() : 3.0 * shift;
       for (Eigen::Matrix3d& d : h.diag) d += add * Eigen::Matrix3d::Identity();
       shift += add;
       if (shift > kLeakLastShift * problem.stiffest()) return LeakTestStatus::SolverFailed;
     }
-    ldlt.solve(f, step);
+    cholesky.solve(f, step);
     const double slope = f.dot(step);
     if (!step.allFinite() || !(slope > 0.0)) return LeakTestStatus::SolverFailed;
 

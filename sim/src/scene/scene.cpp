@@ -457,17 +457,17 @@ void Scene::checkStretch(const std::vector<int>& moved) {
   if (overstretched_.size() != static_cast<std::size_t>(tissue.linkCount()))
     overstretched_.assign(static_cast<std::size_t>(tissue.linkCount()), 0);
 
-  // the alive links of the nodes that moved, in index order
-  std::vector<int> links;
+  // the alive links of the nodes that moved, marked, then taken in index order (sorting them
+  // took 0.08 ms a step, nearly all of the interactions stage, median over the stitch)
+  linkMoved_.assign(static_cast<std::size_t>(tissue.linkCount()), 0);
   for (int i : moved)
     for (int li : tissue.linksOf(i))
-      if (tissue.link(li).alive) links.push_back(li);
-  std::sort(links.begin(), links.end());
-  links.erase(std::unique(links.begin(), links.end()), links.end());
+      if (tissue.link(li).alive) linkMoved_[static_cast<std::size_t>(li)] = 1;
 
   // an event where an over-stretch starts; tears collected
   std::vector<int> torn;
-  for (int li : links) {
+  for (int li = 0; li < tissue.linkCount(); ++li) {
+    if (!linkMoved_[static_cast<std::size_t>(li)]) continue;
     const Link& link = tissue.link(li);
     if (!(link.rest > 0.0)) continue;
     const double stretch = ((state_.x.col(link.b) - state_.x.col(link.a)).norm() - link.rest) / link.rest;

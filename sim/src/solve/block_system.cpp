@@ -132,6 +132,9 @@ PcgResult solvePcg(const BlockSystem& a, const Preconditioner& m, const Eigen::V
     r -= step * q;
     ++result.iterations;
     rNorm = r.norm();
+    // done: no preconditioner for a direction that will not be taken (a solve with the
+    // factors, or a multigrid cycle, every call)
+    if (result.iterations >= maxIterations || !(rNorm > tolerance * bNorm)) break;
     m.apply(r, z);
     const double rzNew = r.dot(z);
     if (!(rzNew > 0.0) || !std::isfinite(rzNew)) break;

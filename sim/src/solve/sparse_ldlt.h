@@ -1,7 +1,7 @@
 #pragma once
 // The sparse LDLᵀ factorisation of a symmetric matrix, read from its lower triangle (Eigen's
 // SimplicialLDLT with its AMD ordering): the coarsest level of the multigrid. (Newton's direct
-// path factorises its 3 by 3 blocks as blocks: block_ldlt.h.)
+// path factorises by supernodes: supernodal_cholesky.h.)
 //
 // Why a class of its own. The factorisation and its triangular solves are most of a stitch
 // replay's time. Under the sanitizer build (preset "sanitize": ASan, UBSan and libFuzzer's

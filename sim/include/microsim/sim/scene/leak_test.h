@@ -38,8 +38,8 @@
 //           the end-cap thrust: p·π·r_i² on each end's cut face, spread on the face's corners
 //           by their share of its rest area, along the end's axis away from the other end;
 //           and the nodes' weight m_i·g.
-// Newton's direction solves H δ = −∇Π with the sparse LDLᵀ in 3 by 3 blocks that the newton
-// solver uses (solve/block_ldlt.h), on the true Hessian; where compressed links make it
+// Newton's direction solves H δ = −∇Π with the sparse Cholesky factorisation that the newton
+// solver uses (solve/supernodal_cholesky.h), on the true Hessian; where compressed links make it
 // indefinite (an end buckling under the thrust where no stitch holds it) it is shifted by
 // μ·I, μ from 1e-5 of the stiffest link's stiffness up fourfold until it factorises. A
 // backtracking (Armijo) line search on Π takes the step (after a shifted direction, which is

@@ -234,6 +234,7 @@ class Scene {
   std::unique_ptr<SceneCollision> collision_;
 
   std::vector<std::uint8_t> overstretched_;  ///< per link: above the limit at the last check
+  std::vector<std::uint8_t> linkMoved_;      ///< per link: an end moved this step (checkStretch)
 
   std::optional<InputFrame> lastFrame_;
   double time_ = 0.0;
