@@ -183,8 +183,9 @@ TEST(ThreadJawObstacles, LessThanThreeQuartersOfATurnOrAStrandAlongTheJawsIsNotW
   const tools::Forceps closed = uprightForceps(*def, 1.0, 1.0);
   EXPECT_TRUE(woundOn(closed, woundThread(0.5, 0.14, 0.6)).empty());
   EXPECT_EQ(woundOn(closed, woundThread(1.0, 0.14, 0.6)).size(), 1U);
-  std::vector<Vec3> along;
-  for (int k = 0; k < 20; ++k) along.emplace_back(0.14, 0.0, 0.1 + 0.1 * k);
+  std::vector<Vec3> along(20);
+  for (std::size_t k = 0; k < along.size(); ++k)
+    along[k] = Vec3(0.14, 0.0, 0.1 + 0.1 * static_cast<double>(k));
   EXPECT_TRUE(woundOn(closed, chainOf(along)).empty());
 }
 

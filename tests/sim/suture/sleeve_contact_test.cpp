@@ -29,11 +29,11 @@ Sleeve jaws(double spread, int first, int last) {
   s.hinge = Vec3(0.0, 0.0, 3.0);
   s.tipA = Vec3(spread, 0.0, 0.0);
   s.tipB = Vec3(-spread, 0.0, 0.0);
-  for (int j = 0; j < 2; ++j) {
+  for (std::size_t j = 0; j < 2; ++j) {
     const Vec3 tip = j == 0 ? s.tipA : s.tipB;
     const Vec3 middle = 0.5 * (tip + s.hinge);
-    s.jaws[static_cast<std::size_t>(2 * j)] = {tip, middle, kTipHalf};
-    s.jaws[static_cast<std::size_t>(2 * j + 1)] = {middle, s.hinge, kHeelHalf};
+    s.jaws[2 * j] = {tip, middle, kTipHalf};
+    s.jaws[2 * j + 1] = {middle, s.hinge, kHeelHalf};
   }
   s.slabRadius = kTipHalf;
   s.slack = kSlack;
