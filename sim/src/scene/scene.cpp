@@ -82,6 +82,14 @@ class TreeCollision final : public SceneCollision {
   std::optional<tools::LinkCutter<Volume>> cutter_;
 };
 
+// the chain as the jaws meet it: the thread starts past the rigid needle (its nodes cannot
+// wind), the same for the jaws' obstacles and for what they grasp
+ThreadNearJaws threadNearJaws(const suture::SutureModel& model, const suture::SutureState& state,
+                              int freeNeedleSwage) {
+  const int firstThread = model.def().needleLinks > 0 ? model.swage() + 1 : 0;
+  return {state.x, state.alive, freeNeedleSwage, firstThread, model.def().contactRadius};
+}
+
 }  // namespace
 
 Scene::Scene(SceneDef def, StepMode mode, ClockFunction clock)
@@ -193,8 +201,7 @@ BetweenJaws Scene::betweenJaws(Hand hand, double closure) const {
   // the suture first: the point of the needle or thread between the jaws nearest where they meet
   if (suture_) {
     // not the turns wound on these jaws: they lie round them, and the jaws close on the tail
-    const ThreadNearJaws thread{sutureState_.x, sutureState_.alive, -1, suture_->swage(),
-                                suture_->def().contactRadius};
+    const ThreadNearJaws thread = threadNearJaws(*suture_, sutureState_, -1);
     std::vector<std::uint8_t> takeable = sutureState_.alive;
     for (const std::array<int, 2>& run : threadWoundOnJaws(f, thread))
       for (int link = std::max(run[0] - 1, 0);
@@ -278,9 +285,7 @@ void Scene::stepSuture() {
   // lies between them (thread_jaw_obstacles.h): it is wound round them in the instrument tie.
   // A needle lying free (nothing holds the suture) is the one opened jaws reach round to take.
   const int freeNeedleSwage = suture_->def().needleLinks > 0 && grips.empty() ? suture_->swage() : -1;
-  const int firstThread = suture_->def().needleLinks > 0 ? suture_->swage() + 1 : 0;
-  const ThreadNearJaws thread{sutureState_.x, sutureState_.alive, freeNeedleSwage, firstThread,
-                              suture_->def().contactRadius};
+  const ThreadNearJaws thread = threadNearJaws(*suture_, sutureState_, freeNeedleSwage);
   for (std::size_t h = 0; h < forceps_.size(); ++h) {
     const auto& f = forceps_[h];
     if (f && jawsPlaced_[h]) appendThreadJawObstacles(*f, thread, world);

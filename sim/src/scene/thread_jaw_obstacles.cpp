@@ -147,12 +147,10 @@ int quadrantStep(const Vec3& a, const Vec3& b) {
   return step == 3 ? -1 : step;
 }
 
-std::vector<std::array<int, 2>> woundRuns(const tools::Forceps& forceps,
-                                          const std::array<tools::JawCapsule, 2>& jaws,
+std::vector<std::array<int, 2>> woundRuns(const tools::Forceps& forceps, const suture::Sleeve& hull,
                                           const ThreadNearJaws& thread,
                                           const std::array<int, 2>& held) {
   std::vector<std::array<int, 2>> runs;
-  const suture::Sleeve hull = jawHull(jaws);
   const double length = tools::jawLength(forceps.def());
   const Eigen::Isometry3d toTool = forceps.pose().inverse();
   const int nodes = static_cast<int>(thread.x.cols());
@@ -164,13 +162,16 @@ std::vector<std::array<int, 2>> woundRuns(const tools::Forceps& forceps,
     first = -1;
   };
   for (int i = std::max(thread.firstThreadNode, 0); i < nodes; ++i) {
-    const Vec3 q = toTool * Vec3(thread.x.col(i));
     const Vec3 p = thread.x.col(i);
-    // on the jaws: between tip and hinge, outside them (not between them), near their surface
-    const double off =
-        i < held[0] || i > held[1] ? suture::hullOffset(hull, p, p).distance : -1.0;  // held: in
-    const bool onJaws = q.x() >= 0.0 && q.x() <= length && off > -kPressedDepth &&
-                        off <= thread.radius + kCaptureMargin;
+    const Vec3 q = toTool * p;
+    // on the jaws: between tip and hinge, outside them (not between them, not held in them),
+    // near their surface
+    const auto nearSurface = [&] {
+      const double off = suture::hullOffset(hull, p, p).distance;
+      return off > -kPressedDepth && off <= thread.radius + kCaptureMargin;
+    };
+    const bool onJaws =
+        q.x() >= 0.0 && q.x() <= length && (i < held[0] || i > held[1]) && nearSurface();
     const bool linked = i > 0 && thread.alive[static_cast<std::size_t>(i - 1)];
     // a link across the axis (two quadrants at once) goes through the jaws, not round them
     const bool across = onJaws && first >= 0 && std::abs(quadrantStep(last, q)) == 2;
@@ -198,7 +199,7 @@ std::vector<std::array<int, 2>> threadWoundOnJaws(const tools::Forceps& forceps,
   const std::array<int, 2> held = forceps.holdsSuture()
                                       ? heldRun(forceps, jaws, thread.x, thread.radius)
                                       : std::array<int, 2>{0, -1};
-  return woundRuns(forceps, jaws, thread, held);
+  return woundRuns(forceps, jawHull(jaws), thread, held);
 }
 
 void appendThreadJawObstacles(const tools::Forceps& forceps, const ThreadNearJaws& thread,
@@ -223,8 +224,9 @@ void appendThreadJawObstacles(const tools::Forceps& forceps, const ThreadNearJaw
       world.capsules.push_back(c);
     }
   }
-  for (const std::array<int, 2>& run : woundRuns(forceps, jaws, thread, held)) {
-    suture::Sleeve sleeve = jawHull(jaws);
+  const suture::Sleeve hull = jawHull(jaws);
+  for (const std::array<int, 2>& run : woundRuns(forceps, hull, thread, held)) {
+    suture::Sleeve sleeve = hull;
     sleeve.first = run[0];
     sleeve.last = run[1];
     world.sleeves.push_back(sleeve);
