@@ -28,18 +28,35 @@ namespace microsim::gui {
 
 namespace {
 
-// runs the event loop until `signal` of `sender` fires, or a generous deadline passes
+// Waits for one firing of `signal` of `sender`, armed before the action that makes it fire: a
+// replay runs on its own thread and may finish before a wait begun after it could connect (it
+// did, while the viewport built a smooth tissue surface for the new scene).
+template <typename Sender, typename Signal>
+class SignalWait {
+ public:
+  SignalWait(Sender* sender, Signal signal) {
+    QObject::connect(sender, signal, &loop_, [this] {
+      fired_ = true;
+      loop_.quit();
+    });
+  }
+  // runs the event loop until the signal has fired, or a generous deadline passes
+  bool wait(int timeoutMs = 30000) {
+    if (fired_) return true;
+    QTimer::singleShot(timeoutMs, &loop_, &QEventLoop::quit);
+    loop_.exec();
+    return fired_;
+  }
+
+ private:
+  QEventLoop loop_;
+  bool fired_ = false;
+};
+
 template <typename Sender, typename Signal>
 bool waitFor(Sender* sender, Signal signal, int timeoutMs = 30000) {
-  QEventLoop loop;
-  bool fired = false;
-  QObject::connect(sender, signal, &loop, [&] {
-    fired = true;
-    loop.quit();
-  });
-  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-  loop.exec();
-  return fired;
+  SignalWait<Sender, Signal> fired(sender, signal);
+  return fired.wait(timeoutMs);
 }
 
 // lets pending layout and paint events run
@@ -94,8 +111,9 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   if (!window.startLesson(1, assessment::AttemptMode::Learn)) return fail(QStringLiteral("lesson 2"));
   AttemptPage* attempt = window.attemptPage();
   std::vector<sim::InputFrame> part(stitch.frames.begin(), stitch.frames.begin() + std::min<std::ptrdiff_t>(130, std::ssize(stitch.frames)));
+  SignalWait replayed(attempt->runner(), &SimulationRunner::replayFinished);
   attempt->replay(std::move(part), false);
-  if (!waitFor(attempt->runner(), &SimulationRunner::replayFinished)) return fail(QStringLiteral("replay"));
+  if (!replayed.wait()) return fail(QStringLiteral("replay"));
   const int frames = window.viewport()->framesDrawn();
   window.viewport()->update();
   if (window.viewport()->framesDrawn() == frames) waitFor(window.viewport(), &Viewport::frameDrawn, 10000);
@@ -117,8 +135,9 @@ QStringList writeScreenshots(const QString& directory, QString* error, int width
   window.viewport()->setDepthOfField(focus);
 
   // the whole stitch, scored
+  SignalWait scored(attempt, &AttemptPage::finished);
   attempt->replay(stitch.frames, true);
-  if (!waitFor(attempt, &AttemptPage::finished, 120000)) return fail(QStringLiteral("results"));
+  if (!scored.wait(120000)) return fail(QStringLiteral("results"));
   if (!saveScreenShot(window, out.filePath(QStringLiteral("results.png")), written, inspect)) return fail(QStringLiteral("results"));
 
   // the settings dialog
