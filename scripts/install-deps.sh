@@ -9,6 +9,8 @@ packages=(
   build-essential cmake ninja-build pkg-config git ccache
   # engine
   libeigen3-dev nlohmann-json3-dev libassimp-dev libfcl-dev
+  # the drawn tissue's smooth surface (Loop subdivision)
+  libosd-dev
   # benchmark peers (tests/bench, never linked by the engine): Bullet's soft body
   libbullet-dev
   # Qt 6: widgets, OpenGL, SQL (SQLite and PostgreSQL drivers), charts, network, translations

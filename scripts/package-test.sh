@@ -37,7 +37,7 @@ project_version="$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$build/CMakeCac
 [ "$(field Section)" = education ] || fail "Section is '$(field Section)'"
 [ "$(field Suggests)" = spacenavd ] || fail "Suggests is '$(field Suggests)', not spacenavd (the 3D mouse's daemon)"
 depends="$(field Depends)"
-for lib in libqt6widgets6 libqt6sql6 libqt6sql6-sqlite libassimp5 libopenigtlink1.11 libsdl2-2.0-0 libspnav0; do
+for lib in libqt6widgets6 libqt6sql6 libqt6sql6-sqlite libassimp5 libopenigtlink1.11 libsdl2-2.0-0 libspnav0 libosdcpu3.5.0; do
   [[ ", $depends," == *", $lib "* || ", $depends," == *", $lib,"* ]] || fail "Depends lacks $lib: $depends"
 done
 

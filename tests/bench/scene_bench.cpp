@@ -22,6 +22,11 @@
 //                                the scene's gap, 0.5 mm, at rest)
 //   collision/tissue/suture/interactions median and p99 (ms), pierce events, nodes, frames,
 //   tissue error samples (the number of sampled steps) and their stride.
+//   drawn surface points, triangles; drawn surface median and p99 (ms: placing the surface the
+//                                viewport draws, smooth or not, with its normals, each step);
+//                                step and drawn surface p99 (ms, the two summed per step);
+//                                drawn surface fold p99 and max (degrees, the worst over the
+//                                sampled steps: drawn_surface.h)
 // k is chosen per case: the error is sampled on at least 100 steps of the default scene's
 // stitch (every 4th of 460), on 20 of the fine one's (every 23rd: a reference solve of 10k
 // nodes is dear; with 20 samples the p99 is the max). The metrics are computed between
@@ -30,6 +35,7 @@
 #include "scene_bench.h"
 
 #include "bench_clock.h"
+#include "drawn_surface.h"
 
 #include "microsim/sim/collide/end_gap.h"
 #include "microsim/sim/collide/interpenetration.h"
@@ -89,11 +95,14 @@ void runSceneBenchCase(const SceneBenchCase& sc, BenchProgress& progress, BenchR
   const std::vector<sim::SceneVessel> vessels = def.vessels;
   const std::vector<sim::collide::ClosedBody> bodies = sim::collide::vesselBodies(vessels);
   sim::Scene scene(std::move(def), sc.mode, cpuSeconds);
+  DrawnSurface drawn(scene.def(), scene.tissue().triangles());
 
   // the replay: stage times every step, stretch every step, error and contact every k-th
   const int frames = static_cast<int>(rec.frames.size());
   const int stride = std::max(1, frames / std::max(1, sc.errorSamples));
   std::array<std::vector<double>, 5> t;
+  std::vector<double> drawing, stepAndDrawing;
+  double foldP99 = 0.0, foldMax = 0.0;
   std::vector<double> errorSteps, errors;
   double maxStretch = 0.0;
   int maxPairs = 0;
@@ -106,8 +115,15 @@ void runSceneBenchCase(const SceneBenchCase& sc, BenchProgress& progress, BenchR
     t[3].push_back(r.times.interactions);
     t[4].push_back(r.times.total);
     const sim::Points& x = scene.tissueState().x;
+    const double drawStart = cpuSeconds();
+    drawn.place(x);
+    drawing.push_back(cpuSeconds() - drawStart);
+    stepAndDrawing.push_back(r.times.total + drawing.back());
     maxStretch = std::max(maxStretch, sceneBenchMaxStretch(scene.tissue(), x));
     if (++step % stride == 0 || step == frames) {
+      const auto [p99, largest] = drawn.folds();
+      foldP99 = std::max(foldP99, p99);
+      foldMax = std::max(foldMax, largest);
       const sim::EquilibriumError e = sim::equilibriumError(scene.tissue(), scene.tissueState(), scene.controls());
       errorSteps.push_back(step);
       errors.push_back(e.ratioPercent);
@@ -140,6 +156,13 @@ void runSceneBenchCase(const SceneBenchCase& sc, BenchProgress& progress, BenchR
   row("frames", frames, "frames");
   row("tissue error samples", static_cast<double>(errors.size()), "steps");
   row("tissue error sample stride", stride, "steps");
+  row("drawn surface points", drawn.pointCount(), "points");
+  row("drawn surface triangles", drawn.triangleCount(), "triangles");
+  row("drawn surface median", quantileMs(drawing, 0.5), "ms");
+  row("drawn surface p99", quantileMs(drawing, 0.99), "ms");
+  row("step and drawn surface p99", quantileMs(stepAndDrawing, 0.99), "ms");
+  row("drawn surface fold p99", foldP99, "deg");
+  row("drawn surface fold max", foldMax, "deg");
 
   // the step time along the stitch
   BenchPlot plot;

@@ -17,7 +17,13 @@
 // Tissue that is no vessel keeps its scene position as its surface point and the outer
 // layer.
 //
-// Built once per scene on the GUI thread, without GL (tests/app/gui/render/tissue_surface_test.cpp).
+// A scene may ask for a smooth surface ("surface": {"subdivision": n}, mesh/smooth_surface.h):
+// the drawn vertices are then those of the coarse tissue refined n times, on a smooth surface
+// through every node, and their normals come from the refined triangles. Everything above holds
+// for them as for nodes: a refined vertex lies in one coarse triangle and takes its part.
+//
+// Built once per scene on the GUI thread, without GL
+// (tests/app/gui/render/tissue_surface_test.cpp).
 //
 // Units: millimetres; colours linear RGB.
 
@@ -28,8 +34,11 @@
 
 #include <QVector3D>
 
+#include "microsim/sim/mesh/smooth_surface.h"
+
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace microsim::gui {
@@ -49,16 +58,26 @@ inline constexpr float kLumenDeepest = 0.35f;
 
 struct TissueSurface {
   std::vector<std::uint32_t> indices;  ///< three per triangle, into the vertices below
-  std::vector<int> node;               ///< the tissue node each vertex shows
+  /// The point each vertex shows: a tissue node, or with `smooth` a vertex of the smooth surface.
+  std::vector<int> source;
   std::vector<float> colours;          ///< 3 per vertex, linear RGB, occlusion applied
   std::vector<float> surface;          ///< 4 per vertex: surface point (x, y, z) and layer
+  /// The smooth surface the vertices lie on; empty when the scene draws its triangles as they are.
+  std::shared_ptr<const sim::SmoothSurface> smooth;
+  /// With `smooth`: `indices` as triangles, for the normals, and the placing's buffers.
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<float> refined;
+  std::vector<float> positions;
+  std::vector<float> normals;
 };
 
-/// The drawn tissue of `def` over `triangles` (the scene's tissue triangles).
+/// The drawn tissue of `def` over `triangles` (the scene's tissue triangles), smooth when
+/// def.surface asks for it (and the smooth surface can be built; else the triangles as they are).
 TissueSurface tissueSurface(const sim::SceneDef& def, const std::vector<std::array<int, 3>>& triangles);
 
-/// Each vertex of `surface` at its node's position and normal in `snapshot`, into `mesh`
-/// (its vertices only; the indices are surface.indices).
-void placeTissue(const TissueSurface& surface, const sim::RenderSnapshot& snapshot, ShadedMesh& mesh);
+/// Each vertex of `surface` where `snapshot` puts it, with its normal, into `mesh` (its vertices
+/// only; the indices are surface.indices): at its node and with the node's normal, or on the
+/// smooth surface through the snapshot's nodes.
+void placeTissue(TissueSurface& surface, const sim::RenderSnapshot& snapshot, ShadedMesh& mesh);
 
 }  // namespace microsim::gui

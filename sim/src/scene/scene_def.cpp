@@ -1,5 +1,7 @@
 #include "microsim/sim/scene/scene_def.h"
 
+#include "microsim/sim/mesh/smooth_surface.h"
+
 #include "microsim/sim/mesh/merge.h"
 #include "microsim/sim/mesh/surface_import.h"
 #include "scene/scene_json_reader.h"
@@ -40,6 +42,7 @@ class SceneReader : public JsonReader {
   bool scissors(const json& v, const std::string& path, ScissorsDef& out);
   bool camera(const json& v, CameraDef& out);
   bool step(const json& v, StepDef& out);
+  bool surface(const json& v, SurfaceDef& out);
   bool limits(const json& v, TissueLimitsDef& out);
 
   std::string file_;
@@ -364,6 +367,15 @@ bool SceneReader::step(const json& v, StepDef& out) {
          optPositive(v, path, "budget_ms", out.budgetMs);
 }
 
+bool SceneReader::surface(const json& v, SurfaceDef& out) {
+  const std::string path = "surface";
+  if (!object(v, path, {"subdivision"}) || !optInt(v, path, "subdivision", 0, out.subdivision))
+    return false;
+  if (out.subdivision > kMaxSmoothLevels)
+    return fail(SceneErrorKind::InvalidValue, key(path, "subdivision"));
+  return true;
+}
+
 bool SceneReader::limits(const json& v, TissueLimitsDef& out) {
   const std::string path = "tissue";
   return object(v, path, {"overstretch", "tear"}) &&
@@ -373,8 +385,8 @@ bool SceneReader::limits(const json& v, TissueLimitsDef& out) {
 
 bool SceneReader::scene(const json& doc, SceneDef& out) {
   if (!object(doc, "",
-              {"version", "objects", "gravity", "solver", "tools", "camera", "step", "tissue",
-               "collision"}))
+              {"version", "objects", "gravity", "solver", "tools", "camera", "step", "surface",
+               "tissue", "collision"}))
     return false;
   if (const json* v = field(doc, "version")) {
     int version = 0;
@@ -387,6 +399,7 @@ bool SceneReader::scene(const json& doc, SceneDef& out) {
   if (const json* v = field(doc, "solver"); v && !solver(*v, out.solver)) return false;
   if (const json* v = field(doc, "camera"); v && !camera(*v, out.camera)) return false;
   if (const json* v = field(doc, "step"); v && !step(*v, out.step)) return false;
+  if (const json* v = field(doc, "surface"); v && !surface(*v, out.surface)) return false;
   if (const json* v = field(doc, "tissue"); v && !limits(*v, out.limits)) return false;
   if (const json* v = field(doc, "collision")) {
     std::string tree = "aabb";

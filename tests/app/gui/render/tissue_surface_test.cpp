@@ -21,10 +21,23 @@ namespace {
 
 const std::string kTissueSurfaceScene = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/anastomosis.json";
 
-sim::SceneDef loadTissueSurfaceScene() {
+// the scene as shipped, drawn with its simulated triangles as they are (`subdivision` 0) or smooth
+sim::SceneDef loadTissueSurfaceScene(int subdivision = 0) {
   sim::SceneDefLoad load = sim::loadSceneDef(kTissueSurfaceScene);
   EXPECT_TRUE(std::holds_alternative<sim::SceneDef>(load));
-  return std::get<sim::SceneDef>(std::move(load));
+  auto def = std::get<sim::SceneDef>(std::move(load));
+  def.surface.subdivision = subdivision;
+  return def;
+}
+
+// the scene after one step with the hands still, as the viewport receives it
+sim::RenderSnapshot snapshotAfterOneStep(sim::Scene& scene) {
+  sim::InputFrame frame;
+  frame.time = scene.dt();
+  scene.step(frame);
+  sim::RenderSnapshot snapshot;
+  sim::fillSnapshot(scene, snapshot);
+  return snapshot;
 }
 
 QVector3D colourOf(const TissueSurface& s, std::size_t vertex) {
@@ -39,31 +52,31 @@ TEST(TissueSurface, EndFacesDrawCopiesOfTheirNodesInTheCutFacesColour) {
   const TissueSurface s = tissueSurface(def, triangles);
   const auto nodes = static_cast<std::size_t>(def.tissue.model.nodeCount());
   ASSERT_EQ(s.indices.size(), 3 * triangles.size());
-  ASSERT_EQ(s.colours.size(), 3 * s.node.size());
-  ASSERT_EQ(s.surface.size(), 4 * s.node.size());
+  ASSERT_EQ(s.colours.size(), 3 * s.source.size());
+  ASSERT_EQ(s.surface.size(), 4 * s.source.size());
   ASSERT_FALSE(def.vessels.empty());
 
   int endTriangles = 0;
   for (const sim::SceneVessel& v : def.vessels)
     endTriangles += (v.clampedEnd.end - v.clampedEnd.begin) + (v.cutEnd.end - v.cutEnd.begin);
   ASSERT_GT(endTriangles, 0);
-  EXPECT_GT(s.node.size(), nodes) << "the end annuli have vertices of their own";
+  EXPECT_GT(s.source.size(), nodes) << "the end annuli have vertices of their own";
 
   // every triangle is drawn once over the same nodes; end-face vertices are copies
   int copiesUsed = 0;
   for (std::size_t t = 0; t < s.indices.size() / 3; ++t) {
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t vertex = s.indices[3 * t + k];
-      ASSERT_LT(vertex, s.node.size());
+      ASSERT_LT(vertex, s.source.size());
       if (vertex < nodes) {
-        EXPECT_EQ(s.node[vertex], static_cast<int>(vertex));
+        EXPECT_EQ(s.source[vertex], static_cast<int>(vertex));
         EXPECT_NE(layerOf(s, vertex), static_cast<float>(TissueLayer::CutFace));
       } else {
         ++copiesUsed;
         EXPECT_EQ(layerOf(s, vertex), static_cast<float>(TissueLayer::CutFace));
         EXPECT_EQ(colourOf(s, vertex), kVesselCutFace);
         // the copy's surface point is its node's
-        const auto node = static_cast<std::size_t>(s.node[vertex]);
+        const auto node = static_cast<std::size_t>(s.source[vertex]);
         for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(s.surface[4 * vertex + c], s.surface[4 * node + c]);
       }
     }
@@ -114,21 +127,70 @@ TEST(TissueSurface, TheLumenDarkensWithDepthAndEveryVertexKnowsItsPlaceOnTheWall
 TEST(TissueSurface, TheSnapshotPlacesEveryVertexAtItsNode) {
   const sim::SceneDef def = loadTissueSurfaceScene();
   sim::Scene scene(def);
-  sim::InputFrame frame;
-  frame.time = scene.dt();
-  scene.step(frame);
-  sim::RenderSnapshot snapshot;
-  sim::fillSnapshot(scene, snapshot);
-  const TissueSurface s = tissueSurface(def, scene.tissue().triangles());
+  const sim::RenderSnapshot snapshot = snapshotAfterOneStep(scene);
+  TissueSurface s = tissueSurface(def, scene.tissue().triangles());
+  ASSERT_FALSE(s.smooth);
   ShadedMesh mesh;
   placeTissue(s, snapshot, mesh);
-  ASSERT_EQ(mesh.vertices.size(), s.node.size());
-  for (std::size_t v = 0; v < s.node.size(); ++v) {
-    const auto n = 3 * static_cast<std::size_t>(s.node[v]);
+  ASSERT_EQ(mesh.vertices.size(), s.source.size());
+  for (std::size_t v = 0; v < s.source.size(); ++v) {
+    const auto n = 3 * static_cast<std::size_t>(s.source[v]);
     for (std::size_t r = 0; r < 3; ++r) {
       ASSERT_EQ(mesh.vertices[v].position[r], snapshot.tissuePositions[n + r]) << v;
       ASSERT_EQ(mesh.vertices[v].normal[r], snapshot.tissueNormals[n + r]) << v;
     }
+  }
+}
+
+TEST(TissueSurface, ASmoothSurfaceDrawsTheVesselRoundWithCrispRimsAndThroughEveryNode) {
+  const sim::SceneDef def = loadTissueSurfaceScene(2);
+  sim::Scene scene(def);
+  const sim::RenderSnapshot snapshot = snapshotAfterOneStep(scene);
+  const auto& triangles = scene.tissue().triangles();
+  TissueSurface s = tissueSurface(def, triangles);
+  ASSERT_TRUE(s.smooth);
+  EXPECT_EQ(s.indices.size(), 3 * 16 * triangles.size())
+      << "two levels: 16 drawn triangles a simulated one";
+  ShadedMesh mesh;
+  placeTissue(s, snapshot, mesh);
+  ASSERT_EQ(mesh.vertices.size(), s.source.size());
+
+  // the surface passes through every node where the snapshot has it
+  const auto& onNode = s.smooth->nodeVertices();
+  for (std::size_t n = 0; n < onNode.size(); ++n) {
+    ASSERT_GE(onNode[n], 0);
+    for (std::size_t r = 0; r < 3; ++r)
+      EXPECT_NEAR(mesh.vertices[static_cast<std::size_t>(onNode[n])].position[r],
+                  snapshot.tissuePositions[3 * n + r], 1e-5f);
+  }
+  // the walls round, their normals straight out (or in, for the lumen); the cut faces flat,
+  // their normals along the axis right up to the rims
+  for (const sim::SceneVessel& v : def.vessels) {
+    const sim::Vec3 axis = v.def.direction.normalized();
+    for (std::size_t vertex = 0; vertex < s.source.size(); ++vertex) {
+      const auto& drawn = mesh.vertices[vertex];
+      const sim::Vec3 p(drawn.position[0], drawn.position[1], drawn.position[2]);
+      const sim::Vec3 n(drawn.normal[0], drawn.normal[1], drawn.normal[2]);
+      const double along = (p - v.def.origin).dot(axis);
+      if (along < 0.05 || along > v.def.length - 0.05) continue;  // the other end, or near a rim
+      const sim::Vec3 across = (p - v.def.origin) - along * axis;
+      const double r = across.norm();
+      if (std::abs(r - v.def.radius) > 2e-3) continue;  // not this vessel's outer wall
+      if (layerOf(s, vertex) != static_cast<float>(TissueLayer::OuterWall)) continue;
+      EXPECT_GT(n.dot(across / r), 0.995) << vertex;
+    }
+    int cutFaceVertices = 0;
+    for (std::size_t vertex = 0; vertex < s.source.size(); ++vertex) {
+      if (layerOf(s, vertex) != static_cast<float>(TissueLayer::CutFace)) continue;
+      const auto& drawn = mesh.vertices[vertex];
+      const sim::Vec3 p(drawn.position[0], drawn.position[1], drawn.position[2]);
+      const double along = (p - v.def.origin).dot(axis);
+      if (std::abs(along - v.def.length) > 1e-3) continue;  // another face
+      ++cutFaceVertices;
+      const sim::Vec3 n(drawn.normal[0], drawn.normal[1], drawn.normal[2]);
+      EXPECT_GT(std::abs(n.dot(axis)), 0.999) << vertex;
+    }
+    EXPECT_GT(cutFaceVertices, 16 * 4) << "the cut face is refined as well";
   }
 }
 

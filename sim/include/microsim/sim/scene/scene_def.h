@@ -13,6 +13,9 @@
 //              "needle": NEEDLE, "scalpel": SCALPEL, "scissors": SCISSORS}, each optional
 //    "camera": {"eye", "target", "up" ([x,y,z] mm), "fov_deg"},
 //    "step": {"rate_hz" (100), "budget_ms" (8)},
+//    "surface": {"subdivision" (0..4, 0)}: the drawn tissue refined that many times into a
+//              smooth surface through its nodes (mesh/smooth_surface.h); drawing only, the
+//              simulation is the same
 //    "tissue": {"overstretch", "tear"},       stretch limits (l − r)/r, each off unless given:
 //              above "overstretch" a link raises SceneEventKind::TissueOverStretch once
 //              (again only after it fell back), above "tear" it is removed (TissueTear)
@@ -166,6 +169,12 @@ struct TissueSolverDef {
   double tolerance = 1e-6;    ///< relative residual that ends a step's solve early
 };
 
+/// How the tissue is drawn (the viewport's business; the engine steps the same either way).
+struct SurfaceDef {
+  int subdivision =
+      0;  ///< Loop subdivision levels of the drawn surface, 0 = the simulated triangles
+};
+
 struct StepDef {
   double rateHz = 100.0;    ///< fixed step rate (Hz): dt = 1 / rate
   double budgetMs = 8.0;    ///< wall-clock budget of one step (ms), used by real-time stepping
@@ -200,6 +209,7 @@ struct SceneDef {
   TissueSolverDef solver;
   CameraDef camera;
   StepDef step;
+  SurfaceDef surface;
   TissueLimitsDef limits;
   CollisionTree tree = CollisionTree::Aabb;
   ContactDef contact;
