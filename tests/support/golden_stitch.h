@@ -9,13 +9,13 @@
 
 namespace microsim::testing {
 
-inline constexpr std::uint64_t kGoldenStitchHash = 0x5b9198a234f9f0a0ULL;
-inline constexpr const char* kGoldenStitchHashText = "5b9198a234f9f0a0";
+inline constexpr std::uint64_t kGoldenStitchHash = 0x9e1ac70b2dcaabf5ULL;
+inline constexpr const char* kGoldenStitchHashText = "9e1ac70b2dcaabf5";
 
 /// The stitch's score on resources/rubrics/02_needle_entry.json (lesson 2) and on
 /// 03_single_stitch.json (lesson 3). The GUI's lesson flow and `microsim-cli score` are each
 /// held to these, so they agree with each other.
-inline constexpr double kGoldenStitchScoreNeedleEntry = 95.12413945545076;
+inline constexpr double kGoldenStitchScoreNeedleEntry = 95.12411211302032;
 inline constexpr double kGoldenStitchScoreSingleStitch = 48.46959211870074;
 
 /// The state hash of resources/recordings/back_wall_catch.msrec replayed on the same scene,

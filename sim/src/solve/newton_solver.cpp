@@ -22,10 +22,22 @@
 //    the threshold, so max over R ∪ B is the residual of the whole mesh.
 // The threshold is the budget's residual tolerance times forceScale. Nodes outside R are
 // held where they are during a step, as if fixed; the result is exact once R stops growing.
+//
+// Parts. When R is every free node and small enough for the direct path, it may fall into
+// parts that nothing couples: no alive link and no soft term joins them (region_parts.h; the
+// stitch's two cut ends, 192 free nodes each). Their Hessian is block diagonal and their
+// energies add up, so each part is solved as a problem of its own, one after the other, with
+// its own kept factorisation: a part in balance costs one residual pass, and a part that needs
+// another iteration or a new factorisation does not take the other along. (Solved together,
+// the stitch's punctures and pulls iterated and factorised both ends while one of them had
+// been in balance since the first or second iteration.) The solve's iterations are those of
+// the part that took the most. What it gives up: a part is no longer carried past the
+// tolerance by the iterations of another, so it ends nearer the tolerance than it did.
 #include "microsim/sim/solve/spring_kernels.h"
 #include "solve/block_system.h"
 #include "solve/link_terms.h"
 #include "solve/multigrid.h"
+#include "solve/region_parts.h"
 #include "solve/solve_support.h"
 #include "solve/solvers.h"
 #include "solve/supernodal_cholesky.h"
@@ -76,6 +88,15 @@ struct Hierarchy {
   long lastUse = 0;
 };
 
+/// A factorisation kept for the next directions, and what it was made for.
+struct KeptFactors {
+  SupernodalCholesky cholesky;
+  bool valid = false;
+  int lastPcgIterations = 0;  ///< of the last CG solve preconditioned by these factors
+  std::vector<int> region;
+  int alive = -1;
+};
+
 class NewtonSolver final : public TissueSolver {
  public:
   NewtonSolver(const SolverParams& params, bool reference)
@@ -89,7 +110,8 @@ class NewtonSolver final : public TissueSolver {
     lastRegion_.clear();
     lastMovers_.clear();
     for (Hierarchy& h : hierarchies_) h.region.clear();
-    factorValid_ = false;
+    for (KeptFactors& k : kept_) k.valid = false;
+    linkSetsModel_ = nullptr;
   }
 
   SolveReport solve(const SpringModel& model, SpringState& state, const SpringControls& controls,
@@ -170,8 +192,43 @@ class NewtonSolver final : public TissueSolver {
     }
     grow(model, seeds, local ? 2 : 0);
 
-    // newton iterations
+    // newton iterations, on each part of the region alone where it falls into parts
+    const SolveReport newton =
+        local && static_cast<int>(region_.size()) == freeCount_ && freeCount_ < kMultigridNodes
+            ? iterateByParts(model, x, budget, clock)
+            : iterate(model, x, budget, clock, 0);
+    report.status = newton.status;
+    report.iterations = newton.iterations;
+    report.residual = newton.residual;
+    if (report.status == SolveStatus::Diverged) {
+      state.x = x0;
+      state.v = v0;
+      report.seconds = clock.seconds();
+      lastModel_ = nullptr;
+      return report;
+    }
+
+    state.v.setZero();
+    springs_ = nullptr;
+    lastConverged_ = report.status == SolveStatus::Converged;
+    lastRegion_ = region_;
+    lastMovers_ = std::move(movers);
+    remember(model, x);
+    report.seconds = clock.seconds();
+    return report;
+  }
+
+ private:
+  /// Newton iterations on the region until it is in balance, with the kept factors kept_[slot]
+  /// (0: the region's, 1 + c: part c's); Diverged leaves x where it went (the caller restores
+  /// the state).
+  SolveReport iterate(const SpringModel& model, Points& x, const SolveBudget& budget,
+                      const Stopwatch& clock, std::size_t slot) {
+    if (kept_.size() <= slot) kept_.resize(slot + 1);
+    factors_ = &kept_[slot];
+    SolveReport report;
     report.status = SolveStatus::IterationLimit;
+    const bool local = params_.activeRegion && !reference_;
     double startResidual = -1.0;
     while (true) {
       bool grewThisStep = false;
@@ -186,38 +243,73 @@ class NewtonSolver final : public TissueSolver {
       if (startResidual < 0.0) startResidual = residual;
       if (!std::isfinite(residual) ||
           residual > kDivergenceFactor * std::max(startResidual, scale_)) {
-        state.x = x0;
-        state.v = v0;
         report.status = SolveStatus::Diverged;
-        report.seconds = clock.seconds();
-        lastModel_ = nullptr;
         return report;
       }
       if (residual <= threshold_ || region_.empty()) {
         report.status = SolveStatus::Converged;
-        break;
+        return report;
       }
-      if (report.iterations >= budget.maxIterations) break;
+      if (report.iterations >= budget.maxIterations) return report;
       if (clock.expired()) {
         report.status = SolveStatus::TimeLimit;
-        break;
+        return report;
       }
       const bool moved = step(model, x, report.residual, grewThisStep);
       ++report.iterations;
-      if (!moved) break;
+      if (!moved) return report;
     }
-
-    state.v.setZero();
-    springs_ = nullptr;
-    lastConverged_ = report.status == SolveStatus::Converged;
-    lastRegion_ = region_;
-    lastMovers_ = std::move(movers);
-    remember(model, x);
-    report.seconds = clock.seconds();
-    return report;
   }
 
- private:
+  /// iterate() on each part of the region (the file's essay, "Parts") in turn, the region
+  /// being every free node: converged when every part is, its iterations and residual those
+  /// of the part with the most.
+  SolveReport iterateByParts(const SpringModel& model, Points& x, const SolveBudget& budget,
+                             const Stopwatch& clock) {
+    findParts(model);
+    if (parts_.size() < 2) return iterate(model, x, budget, clock, 0);
+    const std::vector<int> whole = region_;
+    SolveReport total;
+    total.status = SolveStatus::Converged;
+    closed_ = true;
+    for (std::size_t c = 0; c < parts_.size(); ++c) {
+      setRegion(parts_[c]);
+      const SolveReport part = iterate(model, x, budget, clock, c + 1);
+      total.iterations = std::max(total.iterations, part.iterations);
+      total.residual = std::max(total.residual, part.residual);
+      if (part.status == SolveStatus::Converged) continue;
+      if (total.status == SolveStatus::Converged || part.status == SolveStatus::Diverged)
+        total.status = part.status;
+      if (part.status == SolveStatus::Diverged) break;
+    }
+    closed_ = false;
+    setRegion(whole);
+    return total;
+  }
+
+  /// The region's parts into parts_ (region_parts.h), the links' sets kept while the topology
+  /// and the region stay.
+  void findParts(const SpringModel& model) {
+    if (!(linkSetsModel_ == &model && linkSetsLinks_ == model.linkCount() &&
+          linkSetsAlive_ == model.aliveLinkCount() && linkSetsRegion_ == region_)) {
+      linkSets_ = linkSets(model, region_, local_);
+      linkSetsModel_ = &model;
+      linkSetsLinks_ = model.linkCount();
+      linkSetsAlive_ = model.aliveLinkCount();
+      linkSetsRegion_ = region_;
+    }
+    regionParts(linkSets_, *springs_, region_, local_, parts_);
+  }
+
+  /// The region becomes `nodes` (free ones, none repeated), in that order.
+  void setRegion(const std::vector<int>& nodes) {
+    clearRegion();
+    for (int i : nodes) {
+      local_[i] = static_cast<int>(region_.size());
+      region_.push_back(i);
+    }
+  }
+
   bool sameTopology(const SpringModel& model) const {
     return lastModel_ == &model && lastNodes_ == model.nodeCount() &&
            lastLinks_ == model.linkCount() && lastAlive_ == model.aliveLinkCount();
@@ -330,7 +422,7 @@ class NewtonSolver final : public TissueSolver {
       worst = std::max(worst, f.norm());
     }
     boundaryOut_.clear();
-    if (static_cast<int>(region_.size()) == freeCount_) return worst;
+    if (closed_ || static_cast<int>(region_.size()) == freeCount_) return worst;
     seen_.clear();
     for (int i : region_)
       for (int li : model.linksOf(i)) {
@@ -417,15 +509,16 @@ class NewtonSolver final : public TissueSolver {
   /// while it serves, else the true Hessian factorised, else its projection.
   bool directDirection(const SpringModel& model, const Points& x, double eta) {
     assemble(model, x, false);
-    if (factorValid_ && factoredRegion_ == region_ && factoredAlive_ == model.aliveLinkCount() &&
-        lastPcgIterations_ <= kStaleIterations) {
-      const PcgResult pcg = solvePcg(system_, FactorPreconditioner(cholesky_), force_, direction_,
-                                     eta, kRefactorIterations);
-      lastPcgIterations_ = pcg.iterations;
+    KeptFactors& kept = *factors_;
+    if (kept.valid && kept.region == region_ && kept.alive == model.aliveLinkCount() &&
+        kept.lastPcgIterations <= kStaleIterations) {
+      const PcgResult pcg = solvePcg(system_, FactorPreconditioner(kept.cholesky), force_,
+                                     direction_, eta, kRefactorIterations);
+      kept.lastPcgIterations = pcg.iterations;
       if (pcg.ok && pcg.relativeResidual <= eta && direction_.allFinite()) return true;
     }
-    lastPcgIterations_ = 0;
-    factorValid_ = false;
+    kept.lastPcgIterations = 0;
+    kept.valid = false;
     if (!factorise()) {
       // indefinite (compressed links): this iteration takes the projection. (Keeping the
       // projection for the rest of the solve converges linearly: 20+ iterations where the
@@ -433,16 +526,16 @@ class NewtonSolver final : public TissueSolver {
       assemble(model, x, true);
       if (!factorise()) return false;
     }
-    factorValid_ = true;
-    factoredRegion_ = region_;
-    factoredAlive_ = model.aliveLinkCount();
-    cholesky_.solve(force_, direction_);
+    kept.valid = true;
+    kept.region = region_;
+    kept.alive = model.aliveLinkCount();
+    kept.cholesky.solve(force_, direction_);
     return direction_.allFinite();
   }
 
   /// Factorises system_ by sparse Cholesky (supernodal_cholesky.h); false when it is not
   /// positive definite. The ordering and symbolic analysis are kept while the pattern stays.
-  bool factorise() { return cholesky_.factorize(system_); }
+  bool factorise() { return factors_->cholesky.factorize(system_); }
 
   /// One Newton step on the region from force_ (current); false when it could not move.
   /// `growing`: the region grew just before this step.
@@ -573,12 +666,19 @@ class NewtonSolver final : public TissueSolver {
   bool energyKnown_ = false;
   double knownEnergy_ = 0.0;
   BlockSystem system_;
-  // the direct path: the region's Hessian factorised, and for which region
-  SupernodalCholesky cholesky_;
-  bool factorValid_ = false;
-  int lastPcgIterations_ = 0;  ///< of the last CG solve preconditioned by these factors
-  std::vector<int> factoredRegion_;
-  int factoredAlive_ = -1;
+  // the direct path: the kept factors of the region, or of each of its parts, and those of
+  // the region (or part) iterated on
+  std::vector<KeptFactors> kept_;
+  KeptFactors* factors_ = nullptr;
+  // the region's parts (node lists), the sets its links alone make (per region index its
+  // root) and what they were made for, and whether the region is a part (closed: no free node
+  // outside it is linked to it)
+  std::vector<std::vector<int>> parts_;
+  std::vector<int> linkSets_;
+  const SpringModel* linkSetsModel_ = nullptr;
+  int linkSetsLinks_ = -1, linkSetsAlive_ = -1;
+  std::vector<int> linkSetsRegion_;
+  bool closed_ = false;
   // the soft terms of this solve, and per node the (term, slot) pairs that act on it
   const std::vector<PointSpring>* springs_ = nullptr;
   std::vector<int> springStart_{0};
