@@ -24,53 +24,88 @@ using ColumnMajor = Eigen::SparseMatrix<double>;
 struct SmoothSurface::Weights {
   std::vector<int> nodes;  ///< the surface's coarse nodes, in control-point order
   /// Each level's vertices from the level before (a handful of weights each), then the
-  /// finest level's limit positions from it: a place applies these in turn, three times
-  /// fewer products than the composite below (dozens of weights a vertex at three levels).
+  /// finest level's limit positions from it, applied in turn: three times fewer products than
+  /// their composite (dozens of weights a vertex at three levels), which is never formed.
   std::vector<RowMajor> steps;
-  /// Refined vertex ← control points, the product of `steps`: for blends and the node rows.
-  RowMajor limits;
-  Eigen::SparseLU<ColumnMajor> through;  ///< the nodes' own rows of `limits`, factorised
-  // scratch of `place`: the nodes, then each level's points, x y z per point
+  /// The composite's rows of the refined vertices on the nodes, factorised: the control
+  /// points whose limit surface passes through the nodes solve it.
+  Eigen::SparseLU<ColumnMajor> through;
+  // scratch of `place`
   mutable Eigen::MatrixX3d nodePoints;
   mutable Eigen::MatrixX3d controls;
-  mutable std::array<std::vector<double>, 2> levels;
+  mutable std::vector<std::vector<double>>
+      levels;  ///< each level's values, the control points' first
 
-  // the refined vertices' limit positions for the nodes in `nodePoints`: the last of `levels`
+  /// `width` values per control point in levels[0] carried through every step: the last of
+  /// `levels` (the refined vertices), `width` values per vertex.
+  const std::vector<double>& refine(std::size_t width) const;
+  /// The refined vertices' limit positions for the nodes in `nodePoints`, 3 values per vertex.
   const std::vector<double>& placeNodes() const;
 };
 
+namespace {
+
+// One step of the refinement: each row of `step` a weighted sum of `from`'s points, `width`
+// values per point.
+void refineStep(const RowMajor& step, std::size_t width, const std::vector<double>& from,
+                std::vector<double>& to) {
+  to.assign(width * static_cast<std::size_t>(step.rows()), 0.0);
+  const int* begin = step.outerIndexPtr();
+  const int* column = step.innerIndexPtr();
+  const double* weight = step.valuePtr();
+  for (Eigen::Index row = 0; row < step.rows(); ++row) {
+    double* out = &to[width * static_cast<std::size_t>(row)];
+    for (int k = begin[row]; k < begin[row + 1]; ++k) {
+      const double* p = &from[width * static_cast<std::size_t>(column[k])];
+      for (std::size_t c = 0; c < width; ++c) out[c] += weight[k] * p[c];
+    }
+  }
+}
+
+// The same for points (x, y, z), every frame: each weight scales a point's three coordinates
+// together, kept in registers (Eigen's sparse-dense product walks the weights once per
+// coordinate; a loop over a width, even a fixed one, took two thirds more instructions).
+void refinePoints(const RowMajor& step, const std::vector<double>& from, std::vector<double>& to) {
+  to.resize(3 * static_cast<std::size_t>(step.rows()));
+  const int* begin = step.outerIndexPtr();
+  const int* column = step.innerIndexPtr();
+  const double* weight = step.valuePtr();
+  for (Eigen::Index row = 0; row < step.rows(); ++row) {
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (int k = begin[row]; k < begin[row + 1]; ++k) {
+      const double* p = &from[3 * static_cast<std::size_t>(column[k])];
+      x += weight[k] * p[0];
+      y += weight[k] * p[1];
+      z += weight[k] * p[2];
+    }
+    double* out = &to[3 * static_cast<std::size_t>(row)];
+    out[0] = x;
+    out[1] = y;
+    out[2] = z;
+  }
+}
+
+}  // namespace
+
+const std::vector<double>& SmoothSurface::Weights::refine(std::size_t width) const {
+  levels.resize(steps.size() + 1);  // a buffer a level: sized once
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (width == 3)
+      refinePoints(steps[k], levels[k], levels[k + 1]);
+    else
+      refineStep(steps[k], width, levels[k], levels[k + 1]);
+  }
+  return levels.back();
+}
+
 const std::vector<double>& SmoothSurface::Weights::placeNodes() const {
   controls = through.solve(nodePoints);
+  levels.resize(steps.size() + 1);
   levels[0].resize(3 * static_cast<std::size_t>(controls.rows()));
   for (Eigen::Index p = 0; p < controls.rows(); ++p)
     for (Eigen::Index c = 0; c < 3; ++c)
       levels[0][static_cast<std::size_t>(3 * p + c)] = controls(p, c);
-  // each weight scales a point's three coordinates together (Eigen's sparse-dense product
-  // would walk the weights once per coordinate)
-  std::size_t at = 0;
-  for (const RowMajor& step : steps) {
-    const std::vector<double>& from = levels[at];
-    std::vector<double>& to = levels[1 - at];
-    to.resize(3 * static_cast<std::size_t>(step.rows()));
-    const int* begin = step.outerIndexPtr();
-    const int* column = step.innerIndexPtr();
-    const double* weight = step.valuePtr();
-    for (Eigen::Index row = 0; row < step.rows(); ++row) {
-      double x = 0.0, y = 0.0, z = 0.0;
-      for (int k = begin[row]; k < begin[row + 1]; ++k) {
-        const double* p = &from[3 * static_cast<std::size_t>(column[k])];
-        x += weight[k] * p[0];
-        y += weight[k] * p[1];
-        z += weight[k] * p[2];
-      }
-      double* out = &to[3 * static_cast<std::size_t>(row)];
-      out[0] = x;
-      out[1] = y;
-      out[2] = z;
-    }
-    at = 1 - at;
-  }
-  return levels[at];
+  return refine(3);
 }
 
 namespace {
@@ -136,7 +171,7 @@ SmoothSurface& SmoothSurface::operator=(SmoothSurface&&) noexcept = default;
 SmoothSurface::~SmoothSurface() = default;
 
 int SmoothSurface::vertexCount() const {
-  return static_cast<int>(weights_->limits.rows());
+  return weights_->steps.empty() ? 0 : static_cast<int>(weights_->steps.back().rows());
 }
 
 std::optional<SmoothSurface> SmoothSurface::build(const std::vector<std::array<int, 3>>& triangles,
@@ -228,10 +263,6 @@ std::optional<SmoothSurface> SmoothSurface::build(const std::vector<std::array<i
   std::vector<Stencil> limit(static_cast<std::size_t>(finestCount));
   primvars.Limit(impulses(finestCount), limit);
   s.weights_->steps.push_back(matrix(limit, finestCount));
-  RowMajor composite = s.weights_->steps.front();
-  for (std::size_t k = 1; k < s.weights_->steps.size(); ++k)
-    composite = RowMajor(s.weights_->steps[k] * composite);
-  s.weights_->limits = std::move(composite);
 
   const Far::TopologyLevel& finest = refiner->GetLevel(levels);
   s.triangles_.resize(static_cast<std::size_t>(finest.GetNumFaces()));
@@ -241,19 +272,21 @@ std::optional<SmoothSurface> SmoothSurface::build(const std::vector<std::array<i
   }
   s.parent_ = std::move(parentsCoarser);
 
-  // the refined vertex on each node, and the nodes' rows: the surface must pass through them
-  std::vector<Eigen::Triplet<double>> own;
+  // the refined vertex on each node, and the nodes' rows of the composite (carried back
+  // through the levels from the finest): the surface must pass through them
+  std::vector<Eigen::Triplet<double>> onNodes;
   for (int p = 0; p < points; ++p) {
     int v = p;
     for (int level = 0; level < levels; ++level)
       v = refiner->GetLevel(level).GetVertexChildVertex(v);
     s.nodeVertex_[static_cast<std::size_t>(s.weights_->nodes[static_cast<std::size_t>(p)])] = v;
-    for (RowMajor::InnerIterator it(s.weights_->limits, v); it; ++it)
-      own.emplace_back(p, static_cast<int>(it.col()), it.value());
+    onNodes.emplace_back(p, v, 1.0);
   }
-  ColumnMajor nodeLimits(points, points);
-  nodeLimits.setFromTriplets(own.begin(), own.end());
-  s.weights_->through.compute(nodeLimits);
+  RowMajor rows(points, finestCount);
+  rows.setFromTriplets(onNodes.begin(), onNodes.end());
+  for (auto step = s.weights_->steps.rbegin(); step != s.weights_->steps.rend(); ++step)
+    rows = RowMajor(rows * *step);
+  s.weights_->through.compute(ColumnMajor(rows));
   if (s.weights_->through.info() != Eigen::Success)
     return failed(SmoothSurfaceError::SingularLimits);
 
@@ -286,15 +319,16 @@ void SmoothSurface::place(const Points& nodes, Points& out) const {
 void SmoothSurface::blend(const std::vector<float>& perNode, int channels,
                           std::vector<float>& out) const {
   const Weights& w = *weights_;
-  const auto rows = static_cast<std::size_t>(w.limits.rows());
-  const auto width = static_cast<std::size_t>(channels);
-  out.assign(rows * width, 0.0f);
-  for (std::size_t v = 0; v < rows; ++v)
-    for (RowMajor::InnerIterator it(w.limits, static_cast<Eigen::Index>(v)); it; ++it) {
-      const auto node = static_cast<std::size_t>(w.nodes[static_cast<std::size_t>(it.col())]);
-      for (std::size_t c = 0; c < width; ++c)
-        out[v * width + c] += static_cast<float>(it.value()) * perNode[node * width + c];
-    }
+  const auto width = static_cast<std::size_t>(std::max(channels, 1));
+  w.levels.resize(w.steps.size() + 1);
+  w.levels[0].resize(width * w.nodes.size());
+  for (std::size_t p = 0; p < w.nodes.size(); ++p)
+    for (std::size_t c = 0; c < width; ++c)
+      w.levels[0][p * width + c] = perNode[static_cast<std::size_t>(w.nodes[p]) * width + c];
+  const std::vector<double>& blended = w.refine(width);
+  out.resize(blended.size());
+  std::transform(blended.begin(), blended.end(), out.begin(),
+                 [](double x) { return static_cast<float>(x); });
 }
 
 }  // namespace microsim::sim
