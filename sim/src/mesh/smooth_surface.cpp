@@ -118,13 +118,15 @@ struct Stencil {
 
   void Clear(void* /*unused*/ = nullptr) { terms.clear(); }
   void AddWithWeight(const Stencil& src, double weight) {
-    for (const auto& [point, w] : src.terms) {
+    for (const auto& term : src.terms) {
+      const int point =
+          term.first;  // a plain variable: clang 14 cannot capture a structured binding
       const auto same = std::find_if(terms.begin(), terms.end(),
                                      [point](const auto& t) { return t.first == point; });
       if (same == terms.end())
-        terms.emplace_back(point, w * weight);
+        terms.emplace_back(point, term.second * weight);
       else
-        same->second += w * weight;
+        same->second += term.second * weight;
     }
   }
 };
