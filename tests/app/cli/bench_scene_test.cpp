@@ -58,6 +58,16 @@ TEST(BenchScene, QuickRunHasEveryMetricOfTheDefaultScene) {
   // the per-stage times stay beside the step's
   EXPECT_TRUE(anastomosis.contains(QStringLiteral("tissue p99")));
   EXPECT_TRUE(anastomosis.contains(QStringLiteral("collision median")));
+  EXPECT_GT(anastomosis.value(QStringLiteral("step p99 one replay")), 0.0);
+  // the default scene is drawn as a smooth surface with at least as many points as the fine
+  // pair has nodes (10,080), and it folds less between neighbouring triangles than the fine
+  // pair's 70-sided rings do at rest (360°/70) at all but 1 % of its edges
+  EXPECT_GE(anastomosis.value(QStringLiteral("drawn surface points")), 10080.0);
+  EXPECT_LT(anastomosis.value(QStringLiteral("drawn surface fold p99")), 360.0 / 70.0);
+  EXPECT_GE(anastomosis.value(QStringLiteral("drawn surface fold max")),
+            anastomosis.value(QStringLiteral("drawn surface fold p99")));
+  EXPECT_GE(anastomosis.value(QStringLiteral("step and drawn surface p99")),
+            anastomosis.value(QStringLiteral("drawn surface median")));
 }
 
 }  // namespace
