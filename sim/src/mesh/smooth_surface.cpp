@@ -110,9 +110,10 @@ const std::vector<double>& SmoothSurface::Weights::placeNodes() const {
 
 namespace {
 
-// A refined vertex as a weighted sum of the coarse control points, built up by OpenSubdiv's
-// PrimvarRefiner (which asks only for Clear and AddWithWeight). A Loop stencil holds a few
-// dozen points at most, so a flat list searched linearly beats any map.
+// A vertex of one level as a weighted sum of the points of the level before (or, for the limit,
+// of its own level), built up by OpenSubdiv's PrimvarRefiner from unit impulses (it asks only
+// for Clear and AddWithWeight). A Loop mask holds a vertex and its ring, a handful of points,
+// so a flat list searched linearly beats any map.
 struct Stencil {
   std::vector<std::pair<int, double>> terms;
 
