@@ -53,11 +53,15 @@ std::vector<std::array<int, 3>> jawTriangles(const ForcepsDef& def) {
   return out;
 }
 
-bool Forceps::update(const Eigen::Isometry3d& pose, double closure, bool& released) {
+bool Forceps::update(const Eigen::Isometry3d& pose, double closure, double dt, bool& released) {
   const bool wasClosed = closed();
   closedFrom_ = closure_;
   pose_ = pose;
-  closure_ = closure;
+  // the hold goes the moment the hand eases its squeeze; the jaws themselves part no faster
+  // than their spring opens them
+  squeeze_ = closure;
+  const double slowest = def_.openingSeconds > 0.0 ? closure_ - dt / def_.openingSeconds : closure;
+  closure_ = std::max(closure, slowest);
   released = wasClosed && !closed();
   return !wasClosed && closed();
 }

@@ -73,8 +73,14 @@ void appendJawContacts(const Forceps& forceps, const SpringModel& tissue, const 
         spring.weights[v] = q.barycentric[static_cast<Eigen::Index>(v)];
       }
       spring.anchor = anchor;
-      // the jaw comes from the side the face looks to and pushes the face back into its wall
-      spring.normal = -faceNormal.normalized();
+      // the jaw pushes the face straight away from its axis, the way the face lies from it:
+      // every face round a jaw is pushed outward from the jaw, never one against another (a
+      // jaw tip opened into the corner of a cut end took the cut face's and the outer face's
+      // normals, which pushed the rim against itself and swung its stretch past 50 % from one
+      // step to the next); a face the axis runs through is pushed back into its wall
+      const Vec3 away = q.point - anchor;
+      spring.normal =
+          away.norm() > 1e-9 * radius ? Vec3(away.normalized()) : Vec3(-faceNormal.normalized());
       spring.gap = radius;
       spring.k = stiffness;
       out.push_back(spring);

@@ -43,8 +43,8 @@ tools::Forceps uprightForceps(const ForcepsDef& def, double from, double closure
   pose.linear() = frame;
   tools::Forceps f(def);
   bool released = false;
-  f.update(pose, from, released);
-  f.update(pose, closure, released);
+  f.update(pose, from, 1.0, released);  // a second: time enough to open
+  f.update(pose, closure, 1.0, released);
   return f;
 }
 

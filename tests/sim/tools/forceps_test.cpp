@@ -45,6 +45,45 @@ TEST(Forceps, JawTipsMeetWhenClosedAndOpenBySymmetricAngles) {
   EXPECT_EQ(tools::jawTriangles(def).back(), (std::array<int, 3>{3, 5, 4}));
 }
 
+// A hand that lets go drops the hold at once, but the jaws' spring parts them at its own
+// speed: from closed to open in openingSeconds, however far the hand's closure jumped. Closing
+// follows the hand at once.
+TEST(Forceps, JawsOpenNoFasterThanTheirSpringButLetGoAtOnce) {
+  ForcepsDef def = jawDef();
+  def.openingSeconds = 0.1;
+  tools::Forceps forceps(def);
+  const Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  const double dt = 0.01;
+  bool released = false;
+  EXPECT_TRUE(forceps.update(pose, 1.0, dt, released))
+      << "closed from open in one step: time to grab";
+  EXPECT_DOUBLE_EQ(forceps.closure(), 1.0);
+  EXPECT_FALSE(released);
+
+  EXPECT_FALSE(forceps.update(pose, 0.0, dt, released));
+  EXPECT_TRUE(released) << "the hold goes with the hand's squeeze";
+  EXPECT_FALSE(forceps.closed());
+  EXPECT_NEAR(forceps.closure(), 0.9, 1e-12)
+      << "a tenth of the way open after a tenth of the opening time";
+  for (int k = 2; k <= 10; ++k) {
+    forceps.update(pose, 0.0, dt, released);
+    EXPECT_FALSE(released);
+    EXPECT_NEAR(forceps.closure(), 1.0 - 0.1 * k, 1e-12) << k;
+  }
+  forceps.update(pose, 0.0, dt, released);
+  EXPECT_DOUBLE_EQ(forceps.closure(), 0.0) << "fully open, and no further";
+
+  // half open on the way: a squeeze closes them at once; a hand easing to 0.7 is followed
+  // as fast as the spring allows
+  forceps.update(pose, 1.0, dt, released);
+  forceps.update(pose, 0.7, dt, released);
+  EXPECT_TRUE(released);
+  EXPECT_NEAR(forceps.closure(), 0.9, 1e-12);
+  forceps.update(pose, 0.7, dt, released);
+  forceps.update(pose, 0.7, dt, released);
+  EXPECT_NEAR(forceps.closure(), 0.7, 1e-12);
+}
+
 // a 4 by 4 grid of 2 mm cells in z = 0 (nodes at −4, −2, .., 4 mm), its border fixed, and
 // the right forceps with the shipped jaws
 SceneDef forcepsGridScene(const std::string& solver) {

@@ -43,7 +43,7 @@ Forceps jawContactForceps(const ForcepsDef& def) {
   pose.translate(Vec3(1.0, -2.0, 0.5));
   pose.rotate(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()));
   bool released = false;
-  forceps.update(pose, 0.0, released);
+  forceps.update(pose, 0.0, 1.0, released);
   return forceps;
 }
 
@@ -66,7 +66,7 @@ TEST(JawContact, CapsulesEncloseTheJawsAndEndAtTheirTips) {
     SCOPED_TRACE(closure);
     Forceps forceps = jawContactForceps(def);
     bool released = false;
-    forceps.update(forceps.pose(), closure, released);
+    forceps.update(forceps.pose(), closure, 1.0, released);
     const std::array<JawCapsule, 2> capsules = jawCapsules(forceps);
     const std::array<Vec3, 2> tips = forceps.tips();
     const Points v = jawVertices(def, forceps.pose(), closure);
@@ -144,6 +144,50 @@ TEST(JawContact, FacesInFrontOfAJawArePushedBackAndOthersIgnored) {
   const SpringModel far = jawContactTriangle(middle + 10.0 * side, axis, across, true, -side);
   appendJawContacts(forceps, far, far.restPositions(), {}, reach, k, springs);
   EXPECT_TRUE(springs.empty());
+}
+
+// A jaw's tip in the corner of a cut end: the outer face and the cut face meet at the rim at
+// a right angle, the tip's axis just inside both. Each face is pushed straight away from the
+// axis, the way it lies from it, so the two never push the rim against itself (with the faces'
+// own normals the cut face pushed the rim along the vessel and the outer face pushed it into
+// the wall, and the rim swung from one to the other between steps).
+TEST(JawContact, FacesRoundATipInACornerArePushedAwayFromTheAxis) {
+  const ForcepsDef def = jawContactShippedDef();
+  const Forceps forceps = jawContactForceps(def);
+  const JawCapsule upper = jawCapsules(forceps)[0];
+  const Vec3 axis = (upper.heel - upper.tip).normalized();
+  const Vec3 u = axis.unitOrthogonal();
+  const Vec3 w = axis.cross(u);
+  // the rim runs along w through a point 0.02 mm from the tip along −u and −axis; both faces
+  // look towards the jaw: the outer face along u, the cut face along the axis
+  const Vec3 rim = upper.tip - 0.02 * u - 0.02 * axis;
+  SpringModel m;
+  m.addNode(rim - 0.2 * w);
+  m.addNode(rim + 0.2 * w);
+  m.addNode(rim - 0.3 * u);     // the cut face's far edge, into the wall
+  m.addNode(rim + 0.3 * axis);  // the outer face's far edge, along the jaw
+  const auto facing = [&](int a, int b, int c, const Vec3& towards) {
+    const Points& r = m.restPositions();
+    const Vec3 n = (r.col(b) - r.col(a)).cross(r.col(c) - r.col(a));
+    if (n.dot(towards) > 0.0)
+      m.addTriangle(a, b, c);
+    else
+      m.addTriangle(a, c, b);
+  };
+  facing(0, 1, 2, axis);  // the cut face, in the plane across the axis
+  facing(0, 1, 3, u);     // the outer face, in the plane along it
+  m.finalize();
+  const Points x = m.restPositions();
+  std::vector<PointSpring> springs;
+  appendJawContacts(forceps, m, x, {}, 0.05, 300.0, springs);
+  ASSERT_EQ(springs.size(), 2u) << "both faces are within reach";
+  for (const PointSpring& s : springs) {
+    ASSERT_TRUE(s.oneSided());
+    const Vec3 point = pointSpringOffset(s, x) + s.anchor;
+    const Vec3 away = (point - s.anchor).normalized();
+    EXPECT_NEAR(s.normal.dot(away), 1.0, 1e-9) << "pushed straight away from the axis";
+    EXPECT_GT(pointSpringForce(s, pointSpringOffset(s, x)).dot(away), 0.0);
+  }
 }
 
 }  // namespace

@@ -114,6 +114,10 @@ struct ForcepsDef {
   /// the points it holds
   double holdStiffness = 3e5;
   double closeAt = 0.8;           ///< closure (0..1) at and above which the jaws hold
+  /// s: the least time the jaws take from closed to fully open. Their spring opens them at a
+  /// finite speed, whatever the hand or a button does, so an opening jaw meets the wall it
+  /// swings into and pushes it aside (tools/jaw_contact.h) instead of landing inside it
+  double openingSeconds = 0.1;
 };
 
 /// The needle with its suture (suture/suture_model.h) and how it steps.

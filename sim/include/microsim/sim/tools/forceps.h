@@ -27,7 +27,12 @@
 // zero-rest spring to its place, the hold stiffness shared among them by the area inside
 // (so a grasp is as stiff however finely the wall is meshed); elsewhere (the paper's qss,
 // rk4, implicit) the held faces' corners become control nodes that keep their offsets in
-// the tool frame. When the closure drops below closeAt everything is released.
+// the tool frame. When the hand's closure drops below closeAt everything is released.
+//
+// Opening. The jaws close as fast as the hand squeezes, but their spring parts them no faster
+// than from closed to open in ForcepsDef::openingSeconds: a hand letting go (or a button that
+// jumps the closure to 0) leaves the jaws opening over several steps, so a jaw that opens
+// against the wall pushes it aside (jaw_contact.h) instead of appearing a millimetre inside it.
 //
 // Hold stiffness. ForcepsDef::holdStiffness, 3e5 g/s² for a whole grasp (about the thread's
 // axial stiffness, which couples a pierce to its wall), keeps a grasped wall within a small
@@ -92,12 +97,16 @@ class Forceps {
 
   const ForcepsDef& def() const { return def_; }
   const Eigen::Isometry3d& pose() const { return pose_; }
+  /// The jaws' closure as drawn and as they meet the tissue (0 open .. 1 closed): the
+  /// hand's, except while the jaws are still opening after it let go.
   double closure() const { return closure_; }
-  bool closed() const { return closure_ >= def_.closeAt; }
+  /// Whether the hand squeezes the jaws hard enough to hold (its closure ≥ closeAt).
+  bool closed() const { return squeeze_ >= def_.closeAt; }
 
-  /// Moves the tool. Returns true when this frame crossed closeAt upwards (time to grab)
-  /// and sets `released` when it crossed downwards.
-  bool update(const Eigen::Isometry3d& pose, double closure, bool& released);
+  /// Moves the tool over a step of `dt` s. The jaws close as fast as `closure` asks but open
+  /// no faster than ForcepsDef::openingSeconds allows. Returns true when this frame crossed
+  /// closeAt upwards (time to grab) and sets `released` when it crossed downwards.
+  bool update(const Eigen::Isometry3d& pose, double closure, double dt, bool& released);
   /// The closure of the frame before the last update: what the jaws closed from.
   double closedFrom() const { return closedFrom_; }
 
@@ -129,6 +138,7 @@ class Forceps {
   ForcepsDef def_;
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   double closure_ = 0.0;
+  double squeeze_ = 0.0;  // the hand's closure this frame
   double closedFrom_ = 0.0;
   std::vector<HeldFacePoint> faces_;
   std::vector<int> nodes_;

@@ -6,10 +6,14 @@
 // end), which encloses the jaw mesh. Every tissue face within reach of a capsule gets a
 // one-sided point spring (point_spring.h) on its point nearest the axis (barycentric weights;
 // the nearest points of the axis segment and the face by alternating projections, four
-// rounds), anchored at the axis point, with the face's inward normal and the capsule's radius
-// there as its gap: the jaw, coming from the side the face looks to, keeps the face a radius
-// away and pushes it back into its wall. Faces, not nodes: a jaw pressed between two nodes
-// dents the face there instead of passing through it.
+// rounds), anchored at the axis point, pushing along the line from the axis to that point
+// with the capsule's radius there as its gap: the jaw, coming from the side the face looks to,
+// keeps the face a radius away and pushes it straight away from itself, so that faces meeting
+// round the jaw (a cut end's rim) are never pushed against each other. Faces, not nodes: a jaw
+// pressed between two nodes dents the face there instead of passing through it.
+//
+// The scene takes these terms where the faces are at the start of the tissue solve and takes
+// them again when the solve has carried the faces onto others (scene.cpp, solveTissue).
 //
 // Faces with a node a forceps holds are left out (they move with the jaws).
 //
