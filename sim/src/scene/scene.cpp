@@ -573,11 +573,11 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
     bool changed = false;
     jaws.clear();
     jawContacts(jaws);
-    const bool jawsMet = !std::equal(
+    const bool jawFacesChanged = !std::equal(
         jaws.begin(), jaws.end(), controls_.springs.begin() + static_cast<std::ptrdiff_t>(jawsFrom),
         controls_.springs.end(),
         [](const PointSpring& a, const PointSpring& b) { return a.nodes == b.nodes; });
-    if (jawsMet) changed = true;
+    if (jawFacesChanged) changed = true;
     const std::vector<PointSpring> solvedJaws(
         controls_.springs.begin() + static_cast<std::ptrdiff_t>(jawsFrom), controls_.springs.end());
     controls_.springs.resize(jawsFrom);
@@ -599,7 +599,7 @@ SolveReport Scene::solveTissue(const SolveBudget& budget, StepReport& report) {
     }
     jawsFrom = controls_.springs.size();
     // the same faces: their terms kept as they were solved with
-    const std::vector<PointSpring>& jawTerms = jawsMet ? jaws : solvedJaws;
+    const std::vector<PointSpring>& jawTerms = jawFacesChanged ? jaws : solvedJaws;
     controls_.springs.insert(controls_.springs.end(), jawTerms.begin(), jawTerms.end());
     if (!changed) break;
   }
