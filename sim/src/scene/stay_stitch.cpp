@@ -49,7 +49,9 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const VesselDef& v0 = ends[0]->def;
   const VesselDef& v1 = ends[1]->def;
   const double wall = v0.wallThickness;
-  if (!(link > wall)) return StayStitchError::LinkShorterThanWall;
+  // each wall crossed obliquely by the fewest links longer together than it is thick
+  const int wallLinks = static_cast<int>(std::floor(wall / link)) + 1;
+  const double crossing = wallLinks * link;
   const double bite = stitch.biteWalls * wall;
   if (!(bite > 0.0) || bite >= v0.length) return StayStitchError::BiteOutsideTheEnd;
 
@@ -63,25 +65,40 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const Vec3 radial = std::cos(angle) * zero + std::sin(angle) * a0.cross(zero);
   const Vec3 around = a0.cross(radial);
 
-  // each wall crossed by one link: its run along the axis
-  const double across = std::sqrt(link * link - wall * wall);
-  const Vec3 out0 = cut0 - bite * a0 + v0.radius * radial;
-  const Vec3 in0 = out0 + across * a0 - wall * radial;
+  // the holes on the faceted walls, a few µm inside the cylinders the path is planned on: each
+  // wall's crossing is laid between points already on its faces, its depth measured there,
+  // so that its links start at their rest length (on a finer thread a few µm is a fifth of one)
+  const SpringModel& tissue = def.tissue.model;
+  const auto onFace = [&](const TriangleRange& surface, const Vec3& p) {
+    return holeOn(tissue, surface, p).point;
+  };
+  // from `hole` on one surface to the other surface, `way` along the axis: the crossing's end
+  const auto crossWall = [&](const Vec3& hole, const TriangleRange& other, const Vec3& below,
+                             const Vec3& axis, const Vec3& way) {
+    Vec3 depth = onFace(other, below) - hole;
+    depth -= depth.dot(axis) * axis;
+    const double run = std::sqrt(std::max(0.0, crossing * crossing - depth.squaredNorm()));
+    return onFace(other, hole + run * way + depth);
+  };
+  const Vec3 out0 = onFace(ends[0]->outerSurface, cut0 - bite * a0 + v0.radius * radial);
+  const Vec3 in0 = crossWall(out0, ends[0]->innerSurface, out0 - wall * radial, a0, a0);
   // across the lumen in whole links, to end 1's inner surface
-  const double innerBite0 = bite - across;
+  const double innerBite0 = (cut0 - in0).dot(a0);
   const double gap = (cut1 - cut0).norm();
   const int lumenLinks = std::max(1, static_cast<int>(std::ceil((gap + 2.0 * innerBite0) / link)));
   const double innerBite1 = lumenLinks * link - gap - innerBite0;
-  if (innerBite1 + across >= v1.length) return StayStitchError::BiteOutsideTheEnd;
-  const Vec3 in1 = cut1 - innerBite1 * a1 + (v1.radius - v1.wallThickness) * radial;
-  const Vec3 out1 = in1 - across * a1 + v1.wallThickness * radial;
+  if (innerBite1 + std::sqrt(crossing * crossing - wall * wall) >= v1.length)
+    return StayStitchError::BiteOutsideTheEnd;
+  const Vec3 in1 = onFace(ends[1]->innerSurface,
+                          cut1 - innerBite1 * a1 + (v1.radius - v1.wallThickness) * radial);
+  const Vec3 out1 = crossWall(in1, ends[1]->outerSurface, in1 + v1.wallThickness * radial, a1, -a1);
 
   // node numbers: the tail from N, the holes, the long end down to the swage
   const int tailLinks = std::max(2, static_cast<int>(std::lround(stitch.tailMm / link)));
   const int hole0 = last - tailLinks;
-  const int hole1 = hole0 - 1;
+  const int hole1 = hole0 - wallLinks;
   const int hole2 = hole1 - lumenLinks;
-  const int hole3 = hole2 - 1;
+  const int hole3 = hole2 - wallLinks;
   if (hole3 - n < 2) return StayStitchError::ThreadTooShort;
 
   LaidStayStitch laid;
@@ -94,12 +111,16 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const Vec3 tailWay = (-a0 + 0.6 * around).normalized();
   const Vec3 longWay = -a1;
   const int outLinks = std::min(hole3 - 1 - n, static_cast<int>(std::lround(1.6 / link)));
-  x.col(hole0) = out0;
+  // through each wall on a straight line from hole to hole
+  for (int j = 0; j <= wallLinks; ++j) {
+    const double t = static_cast<double>(j) / wallLinks;
+    x.col(hole0 - j) = out0 + t * (in0 - out0);
+    x.col(hole2 - j) = in1 + t * (out1 - in1);
+  }
   for (int i = hole0 + 1; i <= last; ++i)
     x.col(i) = out0 + link * radial + (i - hole0 - 1) * link * tailWay;
   for (int j = 0; j <= lumenLinks; ++j)
     x.col(hole1 - j) = in0 + (static_cast<double>(j) / lumenLinks) * (in1 - in0);
-  x.col(hole3) = out1;
   const Vec3 corner = out1 + link * radial + outLinks * link * around;
   for (int i = hole3 - 1; i >= n; --i) {
     const int along = hole3 - 1 - i;
@@ -122,8 +143,7 @@ std::variant<LaidStayStitch, StayStitchError> layStayStitch(const SceneDef& def,
   const Vec3 swage = x.col(n);
   for (int i = 0; i < n; ++i) x.col(i) = swage + rotation * (rest.col(i) - rest.col(n));
 
-  // the holes on the walls' faces, each node on its hole
-  const SpringModel& tissue = def.tissue.model;
+  // each node on its hole, the hole's face and barycentrics recorded
   const struct {
     int node;
     const TriangleRange& surface;

@@ -10,11 +10,13 @@
 //   lying beside the vessel away from the gap); through end 0's wall from its outer surface
 //   to its inner one; across the lumen; through end 1's wall from the inside out; one link
 //   straight out, then the long end lying beside end 1, and the needle at its end, flat.
-// A wall (0.1 mm) is thinner than a link (0.15 mm in the shipped scenes), so each wall is
-// crossed obliquely by exactly one link, the node of each hole on its surface: a thread node
-// holds one hole (suture_constraints.h). The bites are measured on the outer surface from
-// each cut edge; the lumen is crossed by whole links, so end 1's bite is end 0's rounded up
-// to the next link (at most one link longer).
+// Each wall is crossed obliquely, on a straight line, by the fewest links that are longer
+// together than the wall is thick: one where a link is longer than the wall (0.13 mm links on
+// its 0.1 mm in the shipped scenes), several on a finer thread, the nodes between on the line
+// inside the wall. The node of each hole lies on its surface: a thread node holds one hole
+// (suture_constraints.h). The bites are measured on the outer surface from each cut edge;
+// the lumen is crossed by whole links, so end 1's bite is end 0's rounded up to the next link
+// (at most one link longer).
 //
 // The holes carry no PierceEvent (the trainee did not make them): they are the suture's
 // pierces from the first step, in the order a needle would have made them, so path order
@@ -40,11 +42,10 @@ struct StayStitchDef {
 };
 
 enum class StayStitchError : std::uint8_t {
-  NoNeedle,             ///< the scene has no needle and thread to lay
-  NoSeveredVessel,      ///< no vessel with two ends to stitch
-  LinkShorterThanWall,  ///< a thread link cannot span the wall: lay it with longer links
-  BiteOutsideTheEnd,    ///< the bite does not fit on the end (or is not positive)
-  ThreadTooShort,       ///< the tail and the passage leave the needle less than two links
+  NoNeedle,           ///< the scene has no needle and thread to lay
+  NoSeveredVessel,    ///< no vessel with two ends to stitch
+  BiteOutsideTheEnd,  ///< the bite does not fit on the end (or is not positive)
+  ThreadTooShort,     ///< the tail and the passage leave the needle less than two links
 };
 
 struct LaidStayStitch {
