@@ -142,6 +142,22 @@ inline ThreadBuilder stitchTwist(double turns, bool rightScrew, bool hitch = fal
   return b;
 }
 
+/// The figure-eight knot, x = (2 + cos 2t) cos 3t, y = (2 + cos 2t) sin 3t, z = sin 4t, cut
+/// open where it is outermost (t = 0), its ends led 3 mm out along x: its crossings have both
+/// signs, so no throw accounts for them (KnotType::Unknown).
+inline ThreadBuilder figureEight() {
+  const auto f = [](double t) {
+    return Vec3((2.0 + std::cos(2.0 * t)) * std::cos(3.0 * t),
+                (2.0 + std::cos(2.0 * t)) * std::sin(3.0 * t), std::sin(4.0 * t));
+  };
+  ThreadBuilder b;
+  b.start(f(0.03) + Vec3(3.0, 0.0, 0.0));
+  b.lineTo(f(0.03));
+  b.curve(f, 0.03, 2.0 * std::numbers::pi - 0.03);
+  b.lineTo(f(-0.03) + Vec3(3.0, 0.0, 0.0));
+  return b;
+}
+
 /// `x` (3 by m) scaled by `scale` about its first node and resampled into `links` links of
 /// equal length along it: a thread a SutureModel of that length and link count can hold at rest.
 inline Points evenlySpaced(const Points& x, double scale, int links) {

@@ -108,19 +108,26 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
   if (candidateCount_ >= def_.confirmReadings) {
     if (sameKnotReading(candidate_, confirmed_)) {
       confirmed_ = candidate_;  // the same knot, where it is now
-    } else {
+    } else if (candidate_.type != KnotType::Unknown || !isTieableKnot(confirmed_)) {
       confirm(step, candidate_, tension);
     }
+    // crossings no throw accounts for do not unmake a knot that was read: a throw pulled tight
+    // over a stitch and let rest read so for 7 steps, nothing having moved along the thread,
+    // and was called slipped; only a clear reading (fewer throws, none, another type) changes it
   }
 
-  // where the knot has been these last steps: has it stopped running along the thread?
-  if (isTieableKnot(confirmed_)) {
-    places_.push_back(place(confirmed_));
-    if (static_cast<int>(places_.size()) > def_.seatSteps) {
-      places_.erase(places_.begin());
+  // where the knot has been these last steps: has it stopped running along the thread? (A
+  // picture nothing explains gives no place: the knot is where it was last read.)
+  const bool unclear = candidate_.type == KnotType::Unknown && isTieableKnot(confirmed_);
+  if (!unclear) {
+    if (isTieableKnot(confirmed_)) {
+      places_.push_back(place(confirmed_));
+      if (static_cast<int>(places_.size()) > def_.seatSteps) {
+        places_.erase(places_.begin());
+      }
+    } else {
+      places_.clear();
     }
-  } else {
-    places_.clear();
   }
   const auto [nearest, farthest] = std::minmax_element(places_.begin(), places_.end());
   const bool seated = !places_.empty() && static_cast<int>(places_.size()) >= def_.seatSteps &&
@@ -133,7 +140,7 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
   if (!tight_ && !slipped_ && isTieableKnot(confirmed_) && stretch >= def_.tightStrain && seated) {
     events_.push_back(knotEventOf(KnotEventKind::KnotTightened, step, confirmed_, tension));
     tight_ = Tight{place(confirmed_), tension, loop(confirmed_)};
-  } else if (tight_ && isTieableKnot(confirmed_)) {
+  } else if (tight_ && isTieableKnot(confirmed_) && !unclear) {
     // on a stitch, only a loop that grows slips: a shrinking one is being run down
     const double loopNow = loop(confirmed_);
     const double slide = tight_->loop >= 0.0 && loopNow >= 0.0
@@ -160,7 +167,6 @@ void KnotTracker::confirm(int step, const KnotReading& reading, double tension) 
   // a tight knot that lost throws or its name has slipped; one that gained a throw is a new knot
   if (tight_) {
     const bool lost = has < had || reading.type == KnotType::None ||
-                      reading.type == KnotType::Unknown ||
                       (reading.type == KnotType::SlipKnot && before.type != KnotType::SlipKnot);
     if (lost) {
       KnotEvent e = knotEventOf(KnotEventKind::KnotSlipped, step, reading, tension);

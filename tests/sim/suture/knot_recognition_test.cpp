@@ -215,18 +215,8 @@ TEST(KnotRecognition, JitterOfAFifthOfALinkChangesNothing) {
 }
 
 TEST(KnotRecognition, AKnotNoRuleExplainsIsUnknown) {
-  // the figure-eight knot, x = (2 + cos 2t) cos 3t, y = (2 + cos 2t) sin 3t, z = sin 4t, cut
-  // open where it is outermost (t = 0): its crossings have both signs, so it is no throw
-  const auto f = [](double t) {
-    return Vec3((2.0 + std::cos(2.0 * t)) * std::cos(3.0 * t), (2.0 + std::cos(2.0 * t)) * std::sin(3.0 * t),
-                std::sin(4.0 * t));
-  };
-  ThreadBuilder b;
-  b.start(f(0.03) + Vec3(3.0, 0.0, 0.0));
-  b.lineTo(f(0.03));
-  b.curve(f, 0.03, 2.0 * std::numbers::pi - 0.03);
-  b.lineTo(f(-0.03) + Vec3(3.0, 0.0, 0.0));
-  const KnotReading r = recognise(b);
+  // the figure-eight knot: its crossings have both signs, so it is no throw
+  const KnotReading r = recognise(knot_test::figureEight());
   EXPECT_EQ(r.type, KnotType::Unknown);
   EXPECT_GE(r.unexplained, 4);
 }

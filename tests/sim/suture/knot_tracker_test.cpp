@@ -93,6 +93,31 @@ TEST(KnotTracker, AKnotWhoseThrowIsLostSlips) {
   EXPECT_DOUBLE_EQ(slipped[0].tension, KnotTrackerDef{}.axialStiffness * 0.003);
 }
 
+TEST(KnotTracker, AnUnexplainedPictureOfATightKnotKeepsItAndIsNoSlip) {
+  KnotTracker tracker;
+  int step = tightenHalfKnot(tracker);
+  ASSERT_TRUE(tracker.tightened());
+  // five readings nothing explains, then the half knot again: still the one tight throw
+  const ThreadBuilder unclear = knot_test::figureEight();  // crossings no throw explains
+  for (int k = 0; k < 5; ++k, ++step)
+    tracker.update(step, unclear.points(), unclear.anchors(), stretched(unclear, 0.003));
+  EXPECT_EQ(tracker.reading().type, KnotType::SingleThrow);
+  EXPECT_TRUE(tracker.tightened());
+  const ThreadBuilder knot = knot_test::stitchTwist(1.0, false);
+  for (int k = 0; k < 3; ++k, ++step)
+    tracker.update(step, knot.points(), knot.anchors(), stretched(knot, 0.003));
+  EXPECT_TRUE(ofKind(tracker.events(), KnotEventKind::KnotSlipped).empty());
+  EXPECT_EQ(ofKind(tracker.events(), KnotEventKind::ThrowFormed).size(), 1U);
+  EXPECT_TRUE(tracker.tightened());
+  // a clear reading of no knot is a slip
+  const ThreadBuilder undone = knot_test::stitchTwist(0.0, false);
+  for (int k = 0; k < 3; ++k, ++step)
+    tracker.update(step, undone.points(), undone.anchors(), stretched(undone, 0.003));
+  const auto slipped = ofKind(tracker.events(), KnotEventKind::KnotSlipped);
+  ASSERT_EQ(slipped.size(), 1U);
+  EXPECT_EQ(slipped[0].cause, KnotSlipCause::StructureLost);
+}
+
 TEST(KnotTracker, ThrowsSlidingWhileTheTensionRisesSlip) {
   KnotTracker tracker;
   int step = tightenHalfKnot(tracker);

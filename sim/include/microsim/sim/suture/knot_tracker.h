@@ -10,8 +10,9 @@
 // over the nodes.
 //
 // A reading counts once the same throws (form, handedness, wraps of each) have been read
-// `confirmReadings` times in a row, so one odd picture of a moving thread raises nothing. Events,
-// each once:
+// `confirmReadings` times in a row, so one odd picture of a moving thread raises nothing. An
+// Unknown reading (crossings no throw accounts for) never replaces a knot with throws: it is a
+// picture the reader cannot explain, not a knot undone. Events, each once:
 //  - ThrowFormed: the confirmed reading has more throws than before; one event per new throw.
 //  - KnotTightened: a confirmed knot with at least one throw, with the thread pulled to at least
 //    `tightStrain` (the largest link stretch: the strands pulled to tighten a knot carry the
