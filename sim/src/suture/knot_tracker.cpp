@@ -105,20 +105,20 @@ std::span<const KnotEvent> KnotTracker::update(int step, const Points& x,
   } else if (candidateCount_ > 0) {
     ++candidateCount_;  // a thread at rest reads as it did
   }
-  if (candidateCount_ >= def_.confirmReadings) {
+  // crossings no throw accounts for do not unmake a knot that was read: a throw pulled tight
+  // over a stitch and let rest read so for 7 steps, nothing having moved along the thread, and
+  // was called slipped. Only a clear reading (fewer throws, none, another type) changes it, and
+  // an unclear one gives no place: the knot is where it was last read.
+  const bool unclear = candidate_.type == KnotType::Unknown && isTieableKnot(confirmed_);
+  if (candidateCount_ >= def_.confirmReadings && !unclear) {
     if (sameKnotReading(candidate_, confirmed_)) {
       confirmed_ = candidate_;  // the same knot, where it is now
-    } else if (candidate_.type != KnotType::Unknown || !isTieableKnot(confirmed_)) {
+    } else {
       confirm(step, candidate_, tension);
     }
-    // crossings no throw accounts for do not unmake a knot that was read: a throw pulled tight
-    // over a stitch and let rest read so for 7 steps, nothing having moved along the thread,
-    // and was called slipped; only a clear reading (fewer throws, none, another type) changes it
   }
 
-  // where the knot has been these last steps: has it stopped running along the thread? (A
-  // picture nothing explains gives no place: the knot is where it was last read.)
-  const bool unclear = candidate_.type == KnotType::Unknown && isTieableKnot(confirmed_);
+  // where the knot has been these last steps: has it stopped running along the thread?
   if (!unclear) {
     if (isTieableKnot(confirmed_)) {
       places_.push_back(place(confirmed_));

@@ -6,6 +6,7 @@
 // load error at its field.
 #include "microsim/sim/scene/scene.h"
 
+#include "support/instrument_tie_scene.h"
 #include "support/knot_scene.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -34,17 +36,9 @@ std::string shippedText(const std::string& name) {
 /// The instrument-tie scene, its thread in `links` links (0: as shipped, 60 links of 0.13 mm,
 /// one across each 0.1 mm wall).
 SceneDef stayStitchScene(int links = 0) {
-  std::string text = shippedText("instrument_tie.json");
-  if (links > 0) {
-    const std::string shipped = R"("links": 60)";
-    const std::size_t at = text.find(shipped);
-    EXPECT_NE(at, std::string::npos);
-    if (at != std::string::npos)
-      text.replace(at, shipped.size(), R"("links": )" + std::to_string(links));
-  }
-  SceneDefLoad load = parseSceneDef(text, kStayScenes + "instrument_tie.json", kStayScenes);
-  EXPECT_TRUE(std::holds_alternative<SceneDef>(load));
-  return std::holds_alternative<SceneDef>(load) ? std::get<SceneDef>(std::move(load)) : SceneDef{};
+  std::optional<SceneDef> def = testing::instrumentTieScene(MICROSIM_SOURCE_DIR, links);
+  EXPECT_TRUE(def);
+  return def ? std::move(*def) : SceneDef{};
 }
 
 /// The shipped thread and one of 0.04 mm links, three across each wall.

@@ -16,17 +16,16 @@
 // through a knot (suture_coupling.h); README, "Session 25", says what was tried.
 #include "microsim/sim/scene/scene.h"
 
+#include "support/instrument_tie_scene.h"
 #include "support/knot_scene.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <variant>
@@ -34,8 +33,6 @@
 
 namespace microsim::sim {
 namespace {
-
-const std::string kScenes = std::string(MICROSIM_SOURCE_DIR) + "/resources/scenes/";
 
 /// Nodes `count` along the polyline `path` from its first point, `link` mm apart along it (the
 /// last piece carried on straight where the polyline runs out).
@@ -62,22 +59,10 @@ std::vector<Vec3> nodesAlong(const std::vector<Vec3>& path, double link, int cou
 /// one turn round each other (radius 0.2 mm, rising 0.3 mm from 0.15 mm over the holes) and
 /// leave it level along the vessel, each on its own side. nullopt when the scene does not load.
 std::optional<SceneDef> throwOverStayStitch(int links) {
-  std::ifstream in(kScenes + "instrument_tie.json");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
-  const std::string shipped = R"("links": 60)";
-  const std::size_t at = text.find(shipped);
-  if (at == std::string::npos) return std::nullopt;
-  text.replace(at, shipped.size(), R"("links": )" + std::to_string(links));
   // a tail long enough to reach from the knot to a hand
-  const std::string tailMm = R"("tail_mm": 2.0)";
-  const std::size_t tailAt = text.find(tailMm);
-  if (tailAt == std::string::npos) return std::nullopt;
-  text.replace(tailAt, tailMm.size(), R"("tail_mm": 3.5)");
-  SceneDefLoad load = parseSceneDef(text, kScenes + "instrument_tie.json", kScenes);
-  if (!std::holds_alternative<SceneDef>(load)) return std::nullopt;
-  SceneDef def = std::get<SceneDef>(std::move(load));
+  std::optional<SceneDef> loaded = testing::instrumentTieScene(MICROSIM_SOURCE_DIR, links, 3.5);
+  if (!loaded) return std::nullopt;
+  SceneDef def = std::move(*loaded);
   NeedleDef& needle = *def.needle;
   const Points laid = needle.initialShape;
   std::vector<suture::Pierce> holes = needle.initialPierces;
