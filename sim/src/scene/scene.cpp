@@ -312,9 +312,11 @@ void Scene::stepSuture() {
   }
   // two-way coupling where the tissue solver takes soft terms, by position otherwise
   if (solver_->supportsPointSprings())
-    couplingSprings_ = suture::couplingSprings(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
+    couplingSprings_ = suture::couplingSprings(tissue, state_.x, *suture_, sutureState_, grips,
+                                               def_.needle->coupling, knotOverStitch_);
   else
-    coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips, def_.needle->coupling);
+    coupling_ = suture::couplingControls(tissue, state_.x, *suture_, sutureState_, grips,
+                                         def_.needle->coupling, knotOverStitch_);
 }
 
 PierceEvent Scene::describePierce(const tools::FaceCrossing& c, const Vec3& tangent, const Vec3& aimed) const {

@@ -64,6 +64,22 @@ void Scene::readKnots() {
   const std::span<const suture::KnotEvent> found =
       knots_->update(steps_, whole ? s.x : knotNodes_, knotAnchors_, knotStretch_);
 
+  // a knot tightened round the stitch's holes pulls them; its turns' length is taken as it
+  // tightens, and kept while it holds
+  const suture::KnotReading& knot = knots_->reading();
+  const bool overStitch = knots_->tightened() && !knot.throws.empty() && !knotAnchors_.empty() &&
+                          knot.throws.front().first < knotAnchors_.front() &&
+                          knot.throws.front().last > knotAnchors_.back();
+  if (overStitch) {
+    const double first = knot.throws.front().first + piece.first;
+    const double last = knot.throws.front().last + piece.first;
+    const double wrap =
+        knotOverStitch_ ? knotOverStitch_->wrap : suture::knotWrap(model, s, first, last);
+    knotOverStitch_ = suture::KnotOverStitch{first, last, wrap};
+  } else {
+    knotOverStitch_.reset();
+  }
+
   for (const suture::KnotEvent& k : found) {
     const SceneEventKind kind = sceneEventKindOf(k.kind);
     addEvent(kind, -1, kind == SceneEventKind::ThrowFormed ? k.throwIndex : -1, k.throws);

@@ -1,6 +1,7 @@
 #include "microsim/sim/suture/suture_coupling.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <utility>
@@ -18,11 +19,86 @@ void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureSt
   for (Pierce& p : state.pierces) p.point = tissuePoint(tissue, tissueX, p.face, p.barycentric);
 }
 
+namespace {
+
+// the arc length from node 0 to curve parameter t (node index + fraction) (mm)
+double arcTo(const SutureModel& model, double t) {
+  const int node = std::clamp(static_cast<int>(t), 0, model.linkCount() - 1);
+  return model.arc(0, node) + (t - node) * model.rest(node);
+}
+
+Vec3 pointAt(const Points& x, double t) {
+  const int node = std::clamp(static_cast<int>(t), 0, static_cast<int>(x.cols()) - 2);
+  const double f = t - node;
+  return (1.0 - f) * x.col(node) + f * x.col(node + 1);
+}
+
+// The pierces between the hard constraints cs[a] and cs[b] of one piece, tied over by `knot`:
+// each is pulled along its straight path from the knot's first passage through the holes to
+// its last, by what the hands reach past the thread from a to b can give (one tension through
+// frictionless holes). False when the knot does not lie over exactly those pierces.
+bool pullThroughKnot(const SutureModel& model, const SutureState& state,
+                     const std::vector<ChainConstraint>& cs, std::size_t a, std::size_t b,
+                     const KnotOverStitch& knot, std::vector<PierceTension>& tensions) {
+  if (b < a + 2 || cs[a].node >= knot.first || cs[b].node <= knot.last) return false;
+  if (cs[a + 1].node <= knot.first || cs[b - 1].node >= knot.last) return false;
+  // the path: the near grip, the knot, the holes, the knot, the far grip
+  std::vector<Vec3> path{cs[a].position, pointAt(state.x, knot.first)};
+  for (std::size_t k = a + 1; k < b; ++k) path.push_back(cs[k].position);
+  path.push_back(pointAt(state.x, knot.last));
+  path.push_back(cs[b].position);
+  double length = 0.0;
+  for (std::size_t k = 1; k < path.size(); ++k) length += (path[k] - path[k - 1]).norm();
+  const double excess = length + knot.wrap - model.arc(cs[a].node, cs[b].node);
+  // taut within a link, as a straight side is (suture_coupling.h)
+  if (excess < -model.rest(cs[a + 1].node)) return true;
+  for (std::size_t k = a + 1; k < b; ++k) {
+    const Vec3& at = cs[k].position;
+    Vec3 pull = Vec3::Zero();
+    for (const Vec3& q : {path[k - a], path[k - a + 2]})
+      if ((q - at).norm() > 0.0) pull += (q - at).normalized();
+    PierceTension& t = tensions[static_cast<std::size_t>(cs[k].source)];
+    t.pull = std::max(excess, 0.0) * pull;
+    t.taut = true;
+  }
+  return true;
+}
+
+}  // namespace
+
+double knotWrap(const SutureModel& model, const SutureState& state, double first, double last) {
+  std::vector<Vec3> holes;
+  std::vector<std::pair<int, Vec3>> between;
+  for (const Pierce& p : state.pierces)
+    if (p.node > first && p.node < last) between.emplace_back(p.node, p.point);
+  std::sort(between.begin(), between.end(),
+            [](const auto& l, const auto& r) { return l.first < r.first; });
+  Vec3 from = pointAt(state.x, first);
+  double straight = 0.0;
+  for (const auto& [node, point] : between) {
+    straight += (point - from).norm();
+    from = point;
+  }
+  straight += (pointAt(state.x, last) - from).norm();
+  return arcTo(model, last) - arcTo(model, first) - straight;
+}
+
 std::vector<PierceTension> pierceTensions(const SutureModel& model, const SutureState& state,
-                                          std::span<const Grip> grips) {
+                                          std::span<const Grip> grips,
+                                          const std::optional<KnotOverStitch>& knot) {
   std::vector<PierceTension> tensions(state.pierces.size());
   for (const Piece& piece : chainPieces(state.alive)) {
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
+    // a knot tied over pierces between two grips carries the hands' pull to them
+    std::vector<std::uint8_t> done(cs.size(), 0);
+    if (knot)
+      for (std::size_t a = 0, b = 1; b < cs.size(); ++b) {
+        if (!cs[b].hard) continue;
+        if (cs[a].hard && pullThroughKnot(model, state, cs, a, b, *knot, tensions))
+          std::fill(done.begin() + static_cast<std::ptrdiff_t>(a),
+                    done.begin() + static_cast<std::ptrdiff_t>(b), 1);
+        a = b;
+      }
     // a pierce with only pierces between it and a free end carries no tension: that end
     // feeds thread through them as fast as it is drawn (they slide, suture_constraints.h)
     std::size_t firstHard = cs.size(), lastHard = 0;
@@ -32,7 +108,7 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
         lastHard = k;
       }
     for (std::size_t k = 0; k < cs.size(); ++k) {
-      if (cs[k].hard || firstHard > k || lastHard < k) continue;
+      if (cs[k].hard || done[k] || firstHard > k || lastHard < k) continue;
       // the tightest side's excess, carried by every taut side (one tension through the pierce)
       double excess = 0.0;
       Vec3 pull = Vec3::Zero();
@@ -59,8 +135,9 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
 
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
                                 const SutureModel& model, const SutureState& state,
-                                std::span<const Grip> grips, const CouplingParams& params) {
-  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips);
+                                std::span<const Grip> grips, const CouplingParams& params,
+                                const std::optional<KnotOverStitch>& knot) {
+  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips, knot);
 
   // average the pulls that reach each free corner node (ordered map: deterministic); a taut
   // pierce with nothing left to take holds its face where it is, so that the tissue does not
@@ -110,8 +187,9 @@ std::optional<Vec3> couplingNeedlePoint(const SutureModel& model, const Points& 
 
 std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
                                          const SutureModel& model, const SutureState& state,
-                                         std::span<const Grip> grips, const CouplingParams& params) {
-  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips);
+                                         std::span<const Grip> grips, const CouplingParams& params,
+                                         const std::optional<KnotOverStitch>& knot) {
+  const std::vector<PierceTension> tensions = pierceTensions(model, state, grips, knot);
   std::vector<PointSpring> springs;
   for (std::size_t k = 0; k < tensions.size(); ++k) {
     const Pierce& p = state.pierces[k];

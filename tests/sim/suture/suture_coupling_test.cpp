@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace microsim::sim::suture {
@@ -196,6 +197,58 @@ TEST(SutureCoupling, PierceTensionsTellTautFromPulling) {
   EXPECT_FALSE(t[0].taut);
   EXPECT_TRUE(t[0].pull.isZero(0.0));
   EXPECT_EQ(couplingControls(v.model, rest, m, s, slack).size(), 0);
+}
+
+// A knot tied over two holes (a stay stitch's two outer holes, 0.6 mm apart): the thread leaves
+// each hole for the knot 0.3 mm above their middle, and the hands hold its ends from there. The
+// path from a hand through the knot, the holes and the knot to the other hand is never straight,
+// so without the knot nothing reads taut; with it, what the hands reach past the thread pulls
+// each hole towards the knot and the other hole, and a slack knot pulls nothing.
+TEST(SutureCoupling, AKnotOverTheHolesCarriesTheHandsPullToThem) {
+  const SutureModel m = thread(40, 4.0);  // links of 0.1 mm
+  SutureState s = SutureState::laidOut(m);
+  const Vec3 knot(0.3, 0.0, 0.3);
+  for (const auto& [node, at] :
+       {std::pair{15, Vec3(0.0, 0.0, 0.0)}, std::pair{25, Vec3(0.6, 0.0, 0.0)}}) {
+    Pierce p;
+    p.node = node;
+    p.point = at;
+    s.x.col(node) = at;
+    s.pierces.push_back(p);
+  }
+  // the knot's passages, nodes 12 and 28: 1.6 mm of thread for a straight path of 0.849 + 0.6
+  s.x.col(12) = knot;
+  s.x.col(28) = knot + Vec3(0.0, 0.02, 0.0);
+  const KnotOverStitch tied{12.0, 28.0, knotWrap(m, s, 12.0, 28.0)};
+  EXPECT_NEAR(
+      tied.wrap,
+      1.6 - (knot - s.pierces[0].point).norm() - 0.6 - (s.x.col(28) - s.pierces[1].point).norm(),
+      1e-12);
+
+  // each hand 1.21 mm out from the knot on 1.2 mm of thread: 0.02 mm reached past it
+  const auto hands = [&](double out) {
+    return std::vector<Grip>{{0, knot + Vec3(-out, 0.0, 0.0)},
+                             {40, Vec3(s.x.col(28)) + Vec3(out, 0.0, 0.0)}};
+  };
+  const std::vector<Grip> pulling = hands(1.21);
+  EXPECT_FALSE(pierceTensions(m, s, pulling)[0].taut);  // no knot: the path is not straight
+  std::vector<PierceTension> t = pierceTensions(m, s, pulling, tied);
+  ASSERT_EQ(t.size(), 2U);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Vec3& at = s.pierces[k].point;
+    const Vec3 toKnot = (s.x.col(k == 0 ? 12 : 28) - at).normalized();
+    const Vec3 toOther = (s.pierces[1 - k].point - at).normalized();
+    EXPECT_TRUE(t[k].taut) << k;
+    EXPECT_LT((t[k].pull - 0.02 * (toKnot + toOther)).norm(), 1e-9) << k;
+  }
+  // the hands come in a little: the path still takes the thread, the holes are held, not pulled
+  t = pierceTensions(m, s, hands(1.17), tied);
+  EXPECT_TRUE(t[0].taut && t[1].taut);
+  EXPECT_TRUE(t[0].pull.isZero(0.0) && t[1].pull.isZero(0.0));
+  // and further: the knot's loop has slack, and it carries nothing
+  t = pierceTensions(m, s, hands(1.0), tied);
+  EXPECT_FALSE(t[0].taut || t[1].taut);
+  EXPECT_TRUE(t[0].pull.isZero(0.0) && t[1].pull.isZero(0.0));
 }
 
 // two vessels facing each other across a gap, as one tissue model

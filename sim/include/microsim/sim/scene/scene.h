@@ -210,6 +210,9 @@ class Scene {
   Points knotNodes_{3, 0};                    ///< the piece read, when the thread is cut
   std::vector<int> knotAnchors_;              ///< its pierced nodes, in the piece's numbering
   std::vector<double> knotStretch_;           ///< its links' stretch
+  /// the knot tightened over the stitch, while it holds: it carries the hands' pull to the
+  /// holes (suture_coupling.h)
+  std::optional<suture::KnotOverStitch> knotOverStitch_;
   Vec3 tipBefore_ = Vec3::Zero();
   Vec3 tipAfter_ = Vec3::Zero();
   Vec3 tangentAfter_ = Vec3::UnitX();

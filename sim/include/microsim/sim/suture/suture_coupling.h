@@ -27,6 +27,17 @@
 //      also stops the face moving towards Q (which a thread cannot resist) until the side
 //      goes slack by more than a link, e.g. when the hand comes back.
 //   4. the tissue solves with those controls; the next frame reads the moved points back.
+// A knot over the stitch (KnotOverStitch). Through a knot no side runs straight to a grip, so
+// by the rule above a knot pulled tight carries nothing to the holes and the walls never come
+// together (README, "Session 25"). Once a throw is tightened round the holes, the pierces
+// between the two grips beyond it read one path instead: grip a → the knot's first passage K₁
+// → the holes in node order → its last passage K₂ → grip b. Its excess over the thread there is
+//     e = |K₁ − a| + |P₁ − K₁| + Σ |P_{k+1} − P_k| + |K₂ − P_n| + |b − K₂| + wrap − arc(a, b)
+// where wrap is the thread the knot's turns take beyond the straight path K₁ → holes → K₂,
+// taken as it tightened (a tight knot's turns keep their length; knotWrap). When e is within a
+// link of 0 or above, every such pierce is taut, pulled by max(e, 0) towards its two neighbours
+// on the path (the outer holes towards the knot). The grips and the arc between them do not
+// change while the hands are still, so a knot that has drawn the walls together holds them.
 // The suture is inextensible and the tissue yields: gain ∈ (0, 1] is the fraction of the
 // excess the tissue takes per frame (1 = at once; less damps the exchange).
 //
@@ -48,6 +59,7 @@
 #include "microsim/sim/suture/suture_constraints.h"
 #include "microsim/sim/suture/suture_model.h"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -69,6 +81,21 @@ Vec3 tissuePoint(const SpringModel& tissue, const Points& tissueX, int face, con
 /// Re-reads every pierce point from the tissue positions (3 by #tissue nodes).
 void readPiercePoints(const SpringModel& tissue, const Points& tissueX, SutureState& state);
 
+/// A knot tightened over a stitch (issue 19): the thread passes it at `first` and at `last`
+/// (curve parameters, node index + fraction; first < last) with the stitch's holes between, and
+/// its turns take `wrap` mm of the thread between those passages beyond the straight path from
+/// the one through the holes to the other. A tight knot's turns keep their length, so `wrap`
+/// is measured once, when it is tightened (knotWrap), and the passages follow the thread.
+struct KnotOverStitch {
+  double first = 0.0;
+  double last = 0.0;
+  double wrap = 0.0;
+};
+
+/// The thread between curve parameters first and last beyond the straight path from the one
+/// through the active pierces between them to the other (mm).
+double knotWrap(const SutureModel& model, const SutureState& state, double first, double last);
+
 /// What the thread does at one pierce: pull(P) of the header essay (mm) and whether a side is
 /// taut (then the pierce holds its face even with no excess left).
 struct PierceTension {
@@ -79,19 +106,23 @@ struct PierceTension {
 /// The tension at each pierce, in SutureState::pierces order; passive pierces (on the
 /// needle) are neither taut nor pulling.
 std::vector<PierceTension> pierceTensions(const SutureModel& model, const SutureState& state,
-                                          std::span<const Grip> grips);
+                                          std::span<const Grip> grips,
+                                          const std::optional<KnotOverStitch>& knot = std::nullopt);
 
 /// The control-node targets that let the tissue solver follow the suture's pull (nodes sorted,
 /// fixed nodes left out); empty when nothing pulls.
 SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX,
                                 const SutureModel& model, const SutureState& state,
-                                std::span<const Grip> grips, const CouplingParams& params = {});
+                                std::span<const Grip> grips, const CouplingParams& params = {},
+                                const std::optional<KnotOverStitch>& knot = std::nullopt);
 
 /// The two-way coupling: one spring per pierce that pulls or holds (SutureState::pierces
 /// order among them), from the pierce point to P + gain·pull(P), or to the needle for a
 /// passive pierce, of the thread's stiffness.
 std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points& tissueX,
                                          const SutureModel& model, const SutureState& state,
-                                         std::span<const Grip> grips, const CouplingParams& params = {});
+                                         std::span<const Grip> grips,
+                                         const CouplingParams& params = {},
+                                         const std::optional<KnotOverStitch>& knot = std::nullopt);
 
 }  // namespace microsim::sim::suture
