@@ -290,6 +290,8 @@ void Scene::stepSuture() {
     const auto& f = forceps_[h];
     if (f && jawsPlaced_[h]) appendThreadJawObstacles(*f, thread, world);
   }
+  // a knot tightened over the stitch: its holes give way to the thread (suture_solver.h)
+  if (knotOverStitch_) world.yieldingBetween = {knotOverStitch_->first, knotOverStitch_->last};
   suture::SutureStepParams params = def_.needle->step;
   params.dt = dt();
   tipBefore_ = sutureState_.x.col(0);
@@ -310,6 +312,11 @@ void Scene::stepSuture() {
              -1, *at, 1);
     suturePierceEvents_.erase(at);
   }
+  // the holes that gave way lead the walls to where the thread left them (suture_coupling.h)
+  if (world.yieldingBetween)
+    for (suture::Pierce& p : sutureState_.pierces)
+      if (p.node > (*world.yieldingBetween)[0] && p.node < (*world.yieldingBetween)[1])
+        p.point = sutureState_.x.col(p.node);
   // two-way coupling where the tissue solver takes soft terms, by position otherwise
   if (solver_->supportsPointSprings())
     couplingSprings_ = suture::couplingSprings(tissue, state_.x, *suture_, sutureState_, grips,

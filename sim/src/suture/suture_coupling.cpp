@@ -144,11 +144,14 @@ SpringControls couplingControls(const SpringModel& tissue, const Points& tissueX
   // spring back only to be pulled again on the next frame
   std::map<int, std::pair<Vec3, int>> perNode;
   for (std::size_t k = 0; k < tensions.size(); ++k) {
-    if (!tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
-    for (int node : tissue.triangles()[static_cast<std::size_t>(state.pierces[k].face)]) {
+    const Pierce& p = state.pierces[k];
+    // how far the thread led the hole past the tissue's point (0 unless it gave way)
+    const Vec3 led = (p.point - tissuePoint(tissue, tissueX, p.face, p.barycentric)) / params.gain;
+    if (!tensions[k].taut && tensions[k].pull.isZero(0.0) && led.isZero(0.0)) continue;
+    for (int node : tissue.triangles()[static_cast<std::size_t>(p.face)]) {
       if (tissue.isFixed(node)) continue;
       auto [it, inserted] = perNode.try_emplace(node, Vec3::Zero(), 0);
-      it->second.first += tensions[k].pull;
+      it->second.first += tensions[k].pull + led;
       it->second.second += 1;
     }
   }
@@ -194,7 +197,9 @@ std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points
   for (std::size_t k = 0; k < tensions.size(); ++k) {
     const Pierce& p = state.pierces[k];
     const bool passive = model.needleLinks() > 0 && p.node < model.swage();
-    if (!passive && !tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
+    // a hole that gave way to the thread (led) is pulled where the thread left it
+    const bool led = p.point != tissuePoint(tissue, tissueX, p.face, p.barycentric);
+    if (!passive && !led && !tensions[k].taut && tensions[k].pull.isZero(0.0)) continue;
     const std::optional<Vec3> onNeedle = passive ? couplingNeedlePoint(model, state.x, p.point) : std::nullopt;
     if (passive && !onNeedle) continue;
     const std::array<int, 3>& t = tissue.triangles()[static_cast<std::size_t>(p.face)];
@@ -204,8 +209,8 @@ std::vector<PointSpring> couplingSprings(const SpringModel& tissue, const Points
       s.weights[c] = p.barycentric[static_cast<Eigen::Index>(c)];
     }
     // a hole the needle passes through stays on the needle; a thread pulls its hole
-    s.anchor = passive ? *onNeedle
-                       : Vec3(tissuePoint(tissue, tissueX, p.face, p.barycentric) + params.gain * tensions[k].pull);
+    // p.point: the tissue's point as read at the step's start, or where the thread led it
+    s.anchor = passive ? *onNeedle : Vec3(p.point + params.gain * tensions[k].pull);
     s.k = params.stiffness;
     springs.push_back(s);
   }

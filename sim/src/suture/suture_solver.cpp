@@ -14,6 +14,12 @@ namespace {
 
 bool finite(const Points& x) { return x.allFinite(); }
 
+// an active pierce whose hole gives way to the thread this step (SutureWorld::yieldingBetween)
+bool yields(const SutureWorld& world, const Pierce& p) {
+  return world.yieldingBetween && p.node > (*world.yieldingBetween)[0] &&
+         p.node < (*world.yieldingBetween)[1];
+}
+
 // sorted by node, the first of several on one node kept
 void inNodeOrderOnce(std::vector<Leader>& leaders) {
   std::stable_sort(leaders.begin(), leaders.end(),
@@ -320,7 +326,7 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
         if (k != a || t != 0.0) leaders_.push_back({k, needleGrip->position + needlePose * (r.col(k) - anchor)});
     }
     for (const Pierce& p : state.pierces)
-      if (p.node >= swage) leaders_.push_back({p.node, p.point});
+      if (p.node >= swage && !yields(world, p)) leaders_.push_back({p.node, p.point});
     inNodeOrderOnce(leaders_);
     // the turns wound on a forceps' jaws stay where they are: a hole that slid moves the span
     // to the turns, not the turns (carried with the span from a grip beyond them, they were
@@ -347,6 +353,9 @@ SutureStepReport SutureSolver::step(const SutureModel& model, SutureState& state
       const double muNow = it == 0 ? mu : 0.0;
       std::fill(contact_.begin(), contact_.end(), std::uint8_t{0});
       for (const Leader& l : leaders_) state.x.col(l.node) = l.position;
+      for (const Pierce& p : state.pierces)
+        if (p.node >= swage && yields(world, p))
+          state.x.col(p.node) += world.yieldShare * (p.point - state.x.col(p.node));
       report.contactNodes = projectCapsuleContacts(state.x, xStart_, world.capsules, radius, muNow,
                                                    movable_, contact_, &blocks_, state.alive);
       report.contactNodes +=

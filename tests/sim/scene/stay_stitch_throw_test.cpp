@@ -12,8 +12,8 @@
 // explains for 7 steps, which the knot reader took for a slip (knot_tracker.h).
 //
 // Snugged on past tight, the tightened throw carries the hands' pull to the holes
-// (suture_coupling.h, a knot over the stitch): the walls come together and stay so at rest, by
-// a few hundredths of a millimetre before the knot's links reach their breaking stretch.
+// (suture_coupling.h, a knot over the stitch), which give way to the thread (suture_solver.h):
+// the walls come together, by more than half the gap, and stay so at rest.
 #include "microsim/sim/collide/end_gap.h"
 #include "microsim/sim/scene/scene.h"
 
@@ -130,16 +130,17 @@ int countOf(const Scene& scene, SceneEventKind kind) {
 
 /// The ends pulled as a surgeon snugs a throw: each hand 0.005 mm a frame outward along the
 /// vessel and 0.01 mm down, to 0.1 mm over the vessel's top, until the throw is tightened (the
-/// knot reader finds it seated and under tension), on for `pastTight` frames more, then held
-/// still for a second. `seen` is called after every step.
+/// knot reader finds it seated and under tension), on for `pastTight` frames more at `slower`
+/// mm a frame outward, then held still for a second. `seen` is called after every step.
 template <typename Seen>
-int snug(Scene& scene, int pastTight, Seen seen) {
+int snug(Scene& scene, int pastTight, double slower, Seen seen) {
   const Points start = scene.sutureState()->x;
   const int last = static_cast<int>(start.cols()) - 1;
   double out = 0.0;
   int tightenedAt = -1;
-  for (int k = 0; k < 600 && (tightenedAt < 0 || k < tightenedAt + pastTight + 100); ++k) {
-    if (k >= 5 && (tightenedAt < 0 || k < tightenedAt + pastTight)) out += 0.005;
+  for (int k = 0; tightenedAt < 0 ? k < 600 : k < tightenedAt + pastTight + 100; ++k) {
+    if (k >= 5 && tightenedAt < 0) out += 0.005;
+    if (tightenedAt >= 0 && k < tightenedAt + pastTight) out += slower;
     InputFrame f;
     f.time = 0.01 * (k + 1);
     const double closure = k < 2 ? 0.0 : 1.0;
@@ -186,7 +187,7 @@ TEST(StayStitchThrow, AThrowPulledTightOverTheStitchOnAFineThreadComesDownAndKee
       std::max(scene.sutureState()->x(2, scene.sutureState()->pierces.front().node),
                scene.sutureState()->x(2, scene.sutureState()->pierces.back().node));
   double highest = -1.0;  // mm over the holes: the crossing's highest while a throw
-  const int tightenedAt = snug(scene, 0, [&](int, int) {
+  const int tightenedAt = snug(scene, 0, 0.0, [&](int, int) {
     if (scene.knots()->reading().type == suture::KnotType::SingleThrow)
       highest = std::max(highest, crossing(scene.sutureState()->x).z() - holes);
   });
@@ -201,38 +202,37 @@ TEST(StayStitchThrow, AThrowPulledTightOverTheStitchOnAFineThreadComesDownAndKee
 }
 
 // Snugged on past tight, the throw pulls the holes towards itself (suture_coupling.h, a knot
-// over the stitch), the walls come together, and held still they stay so: the knot holds the
-// loop's length. Measured: 0.500 mm apart as laid, 0.468 after 0.05 mm a hand past tight, 0.474
-// a second later. (Before the knot carried the hands' pull, the gap stayed 0.500 to the
-// micrometre; snugged 0.1 mm a hand past tight the knot's links still stand past the breaking
-// stretch before the walls follow: README, "Session 26".)
+// over the stitch), they give way to the thread (suture_solver.h, kHoleYieldShare), the walls
+// come together, and held still they stay so: the knot holds the loop's length. Measured:
+// 0.500 mm apart as laid; snugged on 0.3 mm a hand at 0.1 mm/s, 0.22 mm, and 0.22 a second
+// later. Before the knot carried the hands' pull the gap stayed 0.500 to the micrometre; with
+// the holes held as leaders it came to 0.45 before the knot's links broke. Snugged faster
+// (0.15 mm/s) the walls come to 0.16 mm and then the knot breaks: README, "Session 26".
 TEST(StayStitchThrow, AThrowSnuggedPastTightDrawsTheWallsTogetherAndTheKnotHoldsThem) {
   const std::optional<SceneDef> def = throwOverStayStitch(200);
   ASSERT_TRUE(def);
   Scene scene(*def);
   const double laid = gapAtStitch(scene, *def);
-  double narrowest = laid;
+  constexpr int kPastTight = 300;
   int restFrom = -1;
   double widestAtRest = 0.0;  // the gap's widest over the second the hands are held still
-  const int tightenedAt = snug(scene, 10, [&](int k, int tight) {
-    const double gap = gapAtStitch(scene, *def);
-    narrowest = std::min(narrowest, gap);
-    if (tight >= 0 && k >= tight + 10) {
+  const int tightenedAt = snug(scene, kPastTight, 0.001, [&](int k, int tight) {
+    if (tight >= 0 && k >= tight + kPastTight) {
       if (restFrom < 0) restFrom = k;
-      widestAtRest = std::max(widestAtRest, gap);
+      widestAtRest = std::max(widestAtRest, gapAtStitch(scene, *def));
     }
   });
   ASSERT_GE(tightenedAt, 0) << "the throw was never tightened";
+  ASSERT_GE(restFrom, 0);
   expectOneTightThrow(scene);
   const double held = gapAtStitch(scene, *def);
   RecordProperty("gap_laid_um", static_cast<int>(std::lround(1000.0 * laid)));
-  RecordProperty("gap_narrowest_um", static_cast<int>(std::lround(1000.0 * narrowest)));
   RecordProperty("gap_held_um", static_cast<int>(std::lround(1000.0 * held)));
+  RecordProperty("gap_widest_at_rest_um", static_cast<int>(std::lround(1000.0 * widestAtRest)));
   EXPECT_NEAR(laid, 0.5, 0.001);
-  EXPECT_LT(narrowest, laid - 0.02);
-  // a second at rest: the walls do not spring back
-  EXPECT_LT(widestAtRest, laid - 0.015);
-  EXPECT_LT(held, laid - 0.015);
+  // more than half the gap closed, and a second at rest: the walls do not spring back
+  EXPECT_LT(held, 0.25);
+  EXPECT_LT(widestAtRest, 0.25);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace microsim::sim::suture {
 namespace {
@@ -261,6 +262,39 @@ TEST_P(SolverTest, SameInputsGiveTheSameStateBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Suture, SolverTest, ::testing::Values("ftl", "direct"),
                          [](const auto& info) { return info.param; });
+
+// A hole the thread cannot reach: a thread of 2 mm held taut from x = 0 to x = 2 through a
+// pierce 0.2 mm off its line at the middle (0.04 mm past the thread's length). Held as a leader
+// the hole keeps its node and the links stretch; a hole that gives way (a knot over the stitch
+// pulls it) lets the thread draw its node most of the way back to the line, and its links keep
+// their lengths far better, while each round still draws it a tenth back towards the wall.
+TEST(SutureSolvers, AHoleThatGivesWayIsDrawnTowardsTheThreadAndSparesItsLinks) {
+  const SutureModel m = straightThread(20, 2.0);
+  const auto pulled = [&](bool yielding) {
+    SutureState s = along(m, Vec3::Zero(), Vec3::UnitX());
+    Pierce hole = pierceAt(s, 10);
+    hole.point = Vec3(1.0, 0.2, 0.0);
+    s.pierces.push_back(hole);
+    const std::vector<Grip> grips{{0, Vec3::Zero()}, {20, Vec3(2.0, 0.0, 0.0)}};
+    SutureWorld world;
+    if (yielding) world.yieldingBetween = std::array<double, 2>{5.0, 15.0};
+    auto solver = makeSutureSolver("direct");
+    for (int k = 0; k < 20; ++k)
+      EXPECT_EQ(solver->step(m, s, grips, world, {}).status, SutureStepStatus::Ok);
+    return s;
+  };
+  const SutureState held = pulled(false);
+  const SutureState gave = pulled(true);
+  ASSERT_EQ(held.pierces.size(), 1U);
+  ASSERT_EQ(gave.pierces.size(), 1U);
+  EXPECT_EQ(held.pierces[0].node, 10);
+  EXPECT_EQ(gave.pierces[0].node, 10);
+  EXPECT_LT((held.x.col(10) - Vec3(1.0, 0.2, 0.0)).norm(), 1e-12);
+  // drawn towards the line, not onto it: the wall still pulls it back
+  EXPECT_GT(gave.x(1, 10), 0.0);
+  EXPECT_LT(gave.x(1, 10), 0.1);
+  EXPECT_LT(maxAbsStretch(m, gave.x, gave.alive), 0.5 * maxAbsStretch(m, held.x, held.alive));
+}
 
 TEST(SutureSolvers, DirectKeepsLengthsBetweenTwoGripsWhereTheFaithfulOneStretches) {
   const SutureModel m = straightThread();

@@ -12,8 +12,9 @@
 //      drawn through the walls without a knot leaves them where they are; sliding moves whole
 //      links, so without this rule the sub-link excess it leaves would tow the wall a little
 //      every frame). A pierce P with a grip somewhere on each side, between neighbouring
-//      constraints Q (grip or pierce), slides freely, so one tension runs through it: with e = max_sides (|Q − P| − arc) the
-//      tightest side's excess length, every taut side pulls P towards its Q by e:
+//      constraints Q (grip or pierce), slides freely, so one tension runs through it: with e =
+//      max_sides (|Q − P| − arc) the tightest side's excess length, every taut side pulls P towards
+//      its Q by e:
 //          pull(P) = max(e, 0) · Σ_{taut sides} (Q − P)/|Q − P|              (mm)
 //      where a side is taut when |Q − P| ≥ arc − l (within one link of straight: sliding moves
 //      whole links, so a side can stay up to one link short of taut). Each free (not fixed)
@@ -38,6 +39,11 @@
 // link of 0 or above, every such pierce is taut, pulled by max(e, 0) towards its two neighbours
 // on the path (the outer holes towards the knot). The grips and the arc between them do not
 // change while the hands are still, so a knot that has drawn the walls together holds them.
+// Held as the thread's leaders, such holes sent the hands' reach in a frame into the knot's few
+// links before the walls could follow, and the knot broke 0.05 mm short of where it started.
+// So they give way to the thread in its step (suture_solver.h, SutureWorld::yieldingBetween),
+// and after it their points are where the thread left them: a hole whose point is off the
+// tissue's (led) is pulled there by its spring, P_led + gain·pull(P_led), taut or not.
 // The suture is inextensible and the tissue yields: gain ∈ (0, 1] is the fraction of the
 // excess the tissue takes per frame (1 = at once; less damps the exchange).
 //
