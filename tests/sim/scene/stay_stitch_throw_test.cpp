@@ -15,6 +15,7 @@
 // (suture_coupling.h, a knot over the stitch), which give way to the thread (suture_solver.h):
 // the walls come together, to within a tenth of a millimetre, and stay so at rest.
 #include "microsim/sim/collide/end_gap.h"
+#include "microsim/sim/scene/end_state_check.h"
 #include "microsim/sim/scene/scene.h"
 
 #include "support/instrument_tie_scene.h"
@@ -205,9 +206,10 @@ TEST(StayStitchThrow, AThrowPulledTightOverTheStitchOnAFineThreadComesDownAndKee
 // over the stitch), they give way to the thread (suture_solver.h, kHoleYieldShare), the walls
 // come together, and held still they stay so: the knot holds the loop's length. Measured:
 // 0.500 mm apart as laid; snugged on 0.4 mm a hand at 0.1 mm/s, 0.048 mm, and 0.048 a second
-// later. Before the knot carried the hands' pull the gap stayed 0.500 to the micrometre; with
-// the holes held as leaders it came to 0.45 before the knot's links broke. Snugged faster
-// (0.2 mm/s) the walls come to 0.37 mm and then the knot breaks: README, "Session 26".
+// later, the bites in the loop squeezed by 0.6 % (end_state_check.h: over-tight past 25 %). Before
+// the knot carried the hands' pull the gap stayed 0.500 to the micrometre; with the holes held as
+// leaders it came to 0.45 before the knot's links broke. Snugged faster (0.2 mm/s) the walls come
+// to 0.37 mm and then the knot breaks: README, "Session 26".
 TEST(StayStitchThrow, AThrowSnuggedPastTightDrawsTheWallsTogetherAndTheKnotHoldsThem) {
   const std::optional<SceneDef> def = throwOverStayStitch(200);
   ASSERT_TRUE(def);
@@ -233,6 +235,18 @@ TEST(StayStitchThrow, AThrowSnuggedPastTightDrawsTheWallsTogetherAndTheKnotHolds
   // the walls brought within a fifth of the gap, and a second at rest: they do not spring back
   EXPECT_LT(held, 0.1);
   EXPECT_LT(widestAtRest, 0.1);
+
+  // the finished stitch looked at (end_state_check.h): the bites the loop holds are squeezed a
+  // little (the cut faces are not yet touching), far from strangled, and the edges meet without
+  // riding over each other
+  const EndStateResult end = checkEndState(*def, scene.tissueState().x, scene.sutureState());
+  ASSERT_EQ(end.status, EndStateStatus::Checked);
+  ASSERT_EQ(end.stitches.size(), 1U);
+  RecordProperty("compression_permille",
+                 static_cast<int>(std::lround(1000.0 * end.stitches[0].compression)));
+  EXPECT_GT(end.stitches[0].compression, -0.05);
+  EXPECT_LT(end.stitches[0].compression, EndStateParams{}.overTightCompression);
+  EXPECT_TRUE(end.findings.empty());
 }
 
 }  // namespace
