@@ -67,7 +67,6 @@ bool pullThroughKnot(const SutureModel& model, const SutureState& state,
 }  // namespace
 
 double knotWrap(const SutureModel& model, const SutureState& state, double first, double last) {
-  std::vector<Vec3> holes;
   std::vector<std::pair<int, Vec3>> between;
   for (const Pierce& p : state.pierces)
     if (p.node > first && p.node < last) between.emplace_back(p.node, p.point);
@@ -89,9 +88,11 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
   std::vector<PierceTension> tensions(state.pierces.size());
   for (const Piece& piece : chainPieces(state.alive)) {
     const std::vector<ChainConstraint> cs = pieceConstraints(model, state, grips, piece);
-    // a knot tied over pierces between two grips carries the hands' pull to them
-    std::vector<std::uint8_t> done(cs.size(), 0);
-    if (knot)
+    // a knot tied over pierces between two grips carries the hands' pull to them (`done`
+    // stays empty without a knot: nothing to mark on the common path)
+    std::vector<std::uint8_t> done;
+    if (knot) {
+      done.assign(cs.size(), 0);
       for (std::size_t a = 0, b = 1; b < cs.size(); ++b) {
         if (!cs[b].hard) continue;
         if (cs[a].hard && pullThroughKnot(model, state, cs, a, b, *knot, tensions))
@@ -99,6 +100,7 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
                     done.begin() + static_cast<std::ptrdiff_t>(b), 1);
         a = b;
       }
+    }
     // a pierce with only pierces between it and a free end carries no tension: that end
     // feeds thread through them as fast as it is drawn (they slide, suture_constraints.h)
     std::size_t firstHard = cs.size(), lastHard = 0;
@@ -108,7 +110,7 @@ std::vector<PierceTension> pierceTensions(const SutureModel& model, const Suture
         lastHard = k;
       }
     for (std::size_t k = 0; k < cs.size(); ++k) {
-      if (cs[k].hard || done[k] || firstHard > k || lastHard < k) continue;
+      if (cs[k].hard || (!done.empty() && done[k]) || firstHard > k || lastHard < k) continue;
       // the tightest side's excess, carried by every taut side (one tension through the pierce)
       double excess = 0.0;
       Vec3 pull = Vec3::Zero();
